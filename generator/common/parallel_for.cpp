@@ -1,0 +1,39 @@
+#include "common/parallel_for.hpp"
+
+#include <exception>
+#include <limits>
+#include <mutex>
+
+#include <omp.h>
+
+namespace towdb {
+
+int max_threads() { return omp_get_max_threads(); }
+
+void parallel_for(std::int64_t begin, std::int64_t end, int num_threads,
+                  const std::function<void(std::int64_t)>& fn) {
+  if (end <= begin) return;
+  const int threads = num_threads > 0 ? num_threads : omp_get_max_threads();
+  if (threads == 1 || end - begin == 1) {
+    for (std::int64_t i = begin; i < end; ++i) fn(i);
+    return;
+  }
+  std::mutex mutex;
+  std::exception_ptr first_error;
+  std::int64_t first_error_index = std::numeric_limits<std::int64_t>::max();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (std::int64_t i = begin; i < end; ++i) {
+    try {
+      fn(i);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (i < first_error_index) {
+        first_error_index = i;
+        first_error = std::current_exception();
+      }
+    }
+  }
+  if (first_error) std::rethrow_exception(first_error);
+}
+
+}  // namespace towdb

@@ -1,0 +1,87 @@
+#include "test_support.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include <sys/wait.h>
+
+namespace towdb::test {
+
+namespace {
+std::string num(double x) {
+  std::ostringstream os;
+  os.precision(17);
+  os << x;
+  return os.str();
+}
+std::string read_file(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+}  // namespace
+
+::testing::AssertionResult RelClose(double actual, double expected, RelTol tol) {
+  const double scale = std::max(std::abs(actual), std::abs(expected));
+  const double diff = std::abs(actual - expected);
+  if (std::isfinite(actual) && diff <= tol.value * scale) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure()
+         << "actual " << num(actual) << " vs expected " << num(expected) << ": relative difference "
+         << (scale > 0 ? diff / scale : diff) << " > tolerance " << tol.value;
+}
+
+::testing::AssertionResult AbsClose(double actual, double expected, AbsTol tol) {
+  const double diff = std::abs(actual - expected);
+  if (std::isfinite(actual) && diff <= tol.value) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "actual " << num(actual) << " vs expected " << num(expected)
+                                       << ": difference " << diff << " > tolerance " << tol.value;
+}
+
+std::filesystem::path source_dir() {
+  if (const char* s = std::getenv("TOWDB_SOURCE_DIR")) return s;
+  return std::filesystem::current_path();
+}
+
+std::filesystem::path shared_dir() {
+  const auto p = source_dir().parent_path() / "shared";
+  return std::filesystem::exists(p) ? p : std::filesystem::path{};
+}
+
+std::filesystem::path towdb_exe() {
+  if (const char* s = std::getenv("TOWDB_EXE")) return s;
+  return {};
+}
+
+std::filesystem::path make_temp_dir(const std::string& prefix) {
+  std::random_device rd;
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const auto p = std::filesystem::temp_directory_path() /
+                   (prefix + "-" + std::to_string(rd()) + std::to_string(attempt));
+    if (std::filesystem::create_directory(p)) return p;
+  }
+  throw std::runtime_error("cannot create a temporary directory");
+}
+
+CommandResult run_towdb(const std::string& args, const std::string& stdin_text) {
+  const auto dir = make_temp_dir("towdb-cli");
+  const auto in = dir / "stdin", out = dir / "stdout", err = dir / "stderr";
+  { std::ofstream(in, std::ios::binary) << stdin_text; }
+  const std::string cmd = "'" + towdb_exe().string() + "' " + args + " <'" + in.string() + "' >'" +
+                          out.string() + "' 2>'" + err.string() + "'";
+  const int status = std::system(cmd.c_str());
+  CommandResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_file(out);
+  r.err = read_file(err);
+  std::filesystem::remove_all(dir);
+  return r;
+}
+
+}  // namespace towdb::test

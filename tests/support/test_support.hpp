@@ -1,0 +1,48 @@
+// Shared test helpers: named tolerances and paths (one copy, after Ceres
+// test_util). A tolerance states its kind (relative / absolute with unit) and,
+// where it is declared, why it has that size.
+#ifndef TOWDB_TESTS_SUPPORT_TEST_SUPPORT_HPP
+#define TOWDB_TESTS_SUPPORT_TEST_SUPPORT_HPP
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace towdb::test {
+
+struct RelTol {
+  double value;  // |a - b| <= value * max(|a|, |b|)
+};
+struct AbsTol {
+  double value;  // |a - b| <= value, in the unit of the quantity
+};
+
+::testing::AssertionResult RelClose(double actual, double expected, RelTol tol);
+::testing::AssertionResult AbsClose(double actual, double expected, AbsTol tol);
+
+// The project source root (tests run from it; TOWDB_SOURCE_DIR overrides).
+std::filesystem::path source_dir();
+// ../shared beside the project, or "" when absent.
+std::filesystem::path shared_dir();
+// The towdb executable under test (TOWDB_EXE), or "" when not set.
+std::filesystem::path towdb_exe();
+// A fresh, empty temporary directory for one test, removed by the caller.
+std::filesystem::path make_temp_dir(const std::string& prefix);
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+// Runs `towdb <args>` (args already shell-quoted) with optional stdin text.
+CommandResult run_towdb(const std::string& args, const std::string& stdin_text = "");
+
+}  // namespace towdb::test
+
+#define EXPECT_REL_CLOSE(actual, expected, rel) \
+  EXPECT_TRUE(::towdb::test::RelClose((actual), (expected), ::towdb::test::RelTol{rel}))
+#define EXPECT_ABS_CLOSE(actual, expected, abs) \
+  EXPECT_TRUE(::towdb::test::AbsClose((actual), (expected), ::towdb::test::AbsTol{abs}))
+
+#endif  // TOWDB_TESTS_SUPPORT_TEST_SUPPORT_HPP
