@@ -14,6 +14,9 @@ towdb_require(Eigen3_FOUND "Eigen3" "libeigen3-dev")
 find_package(SQLite3 QUIET)
 towdb_require(SQLite3_FOUND "SQLite3" "libsqlite3-dev")
 
+find_package(OpenSSL QUIET COMPONENTS Crypto)
+towdb_require(OpenSSL_FOUND "OpenSSL libcrypto" "libssl-dev")
+
 find_package(OpenMP QUIET COMPONENTS CXX)
 towdb_require(OpenMP_CXX_FOUND "OpenMP" "a compiler with OpenMP (g++)")
 

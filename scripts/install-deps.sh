@@ -9,6 +9,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev        # linear algebra
   libsqlite3-dev sqlite3
+  libssl-dev           # SHA-256 content hashes (libcrypto)
   libfftw3-dev         # FFTs for the sea records
   libcli11-dev         # command-line parsing
   libtomlplusplus-dev  # ship and sweep files

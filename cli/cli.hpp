@@ -1,0 +1,30 @@
+// The towdb CLI: each command lives in its own cmd_*.cpp and registers itself
+// through one add_*_command function. Parsing (CLI11) fills plain structs;
+// commands run after parsing, so every error goes through main()'s one
+// exception-to-exit-code mapping: 0 ok, 2 bad input (InputError, usage),
+// 1 anything else.
+#ifndef TOWDB_CLI_CLI_HPP
+#define TOWDB_CLI_CLI_HPP
+
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "io/ship_file.hpp"
+
+namespace towdb::cli {
+
+struct Context {
+  std::string ships_dir;          // --ships-dir; empty = default
+  std::function<int()> action;    // set by the chosen command's callback
+};
+
+// The vessel catalog of --ships-dir (or the default directory).
+io::ShipCatalog load_catalog(const Context& ctx);
+
+void add_ships_command(CLI::App& app, Context& ctx);
+
+}  // namespace towdb::cli
+
+#endif  // TOWDB_CLI_CLI_HPP

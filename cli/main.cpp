@@ -1,0 +1,48 @@
+// towdb: extreme towline tension database -- command-line entry point.
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include "cli.hpp"
+#include "common/error.hpp"
+#include "common/version.hpp"
+
+int main(int argc, char** argv) {
+  using towdb::cli::Context;
+  CLI::App app{"towdb: extreme towline tension for open-ocean towing (tug, tow, sea, towline)", "towdb"};
+  app.set_version_flag("--version", std::string("towdb ") + towdb::kVersion);
+  app.require_subcommand(1);
+  Context ctx;
+  app.add_option("--ships-dir", ctx.ships_dir,
+                 "Directory of vessel files (default: $TOWDB_SHIPS_DIR or the bundled ships/)");
+  towdb::cli::add_ships_command(app, ctx);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "towdb: error: " << e.what() << "\nRun 'towdb --help' for usage.\n";
+    return 2;
+  } catch (const towdb::InputError& e) {
+    std::cerr << "towdb: error: " << e.what() << "\n";
+    return 2;
+  }
+  if (!ctx.action) {
+    std::cerr << "towdb: error: no command given\nRun 'towdb --help' for usage.\n";
+    return 2;
+  }
+  try {
+    return ctx.action();
+  } catch (const towdb::InputError& e) {
+    std::cerr << "towdb: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "towdb: error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,164 @@
+// Analytic tests of the surge integrator (generator/simulation/surge.hpp).
+//   surge-1  linear line, harmonic force on the tug: the steady dynamic tension
+//            amplitude equals the closed-form 2-DOF frequency response.
+//   surge-2  step-size convergence: halving the forcing interval changes the
+//            maximum by less than the RK4 error bound.
+//   surge-3  a slack-prone bilinear line: slack time and snatch events counted.
+#include <cmath>
+#include <complex>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "common/constants.hpp"
+#include "simulation/surge.hpp"
+#include "test_support.hpp"
+
+namespace towdb::simulation {
+namespace {
+
+// A linear spring-dashpot line, slack below -T.
+struct LinearLine {
+  double k = 0.0, c = 0.0, mean = 0.0;
+  double tension(double xi, double xi_dot) const { return std::max(-mean, k * xi + c * xi_dot); }
+  double stiffness(double, double) const { return k; }
+  double damping(double, double) const { return c; }
+  double mean_tension_n() const { return mean; }
+};
+
+SurgeParameters tug_and_tow() {
+  SurgeParameters p;
+  p.tug_mass_kg = 2.5e6;  // about a T-ATF 166 with surge added mass
+  p.tow_mass_kg = 1.0e7;  // a frigate-sized tow
+  p.tug_damping_n_s_m = 6.0e4;
+  p.tow_damping_n_s_m = 1.5e5;
+  p.cos_alpha_tug = 0.95;
+  p.cos_alpha_tow = 0.98;
+  return p;
+}
+
+DayForcing harmonic_tug_force(double amplitude_n, double omega_rad_s, double dt_s, std::size_t n) {
+  DayForcing f;
+  f.dt_s = dt_s;
+  for (std::size_t i = 0; i < n; ++i) {
+    f.tug_force_n.push_back(amplitude_n * std::cos(omega_rad_s * static_cast<double>(i) * dt_s));
+  }
+  f.tow_force_n.assign(n, 0.0);
+  f.xi_ns_m.assign(n, 0.0);
+  f.xi_ns_dot_m_s.assign(n, 0.0);
+  return f;
+}
+
+// Closed-form amplitude of tau for EQ-SURGE-1..4 with a linear line:
+// [-w^2 M + i w (B + c s s^T) + k s s^T] X = F e1, s = (c1, -c2), tau = (k + i w c) s.X.
+double linear_tension_amplitude(const SurgeParameters& p, const LinearLine& line, double force_n, double w) {
+  using C = std::complex<double>;
+  const double s1 = p.cos_alpha_tug, s2 = -p.cos_alpha_tow;
+  const C kc(line.k, w * line.c);
+  const C a11 = -w * w * p.tug_mass_kg + C(0, w * p.tug_damping_n_s_m) + kc * s1 * s1;
+  const C a22 = -w * w * p.tow_mass_kg + C(0, w * p.tow_damping_n_s_m) + kc * s2 * s2;
+  const C a12 = kc * s1 * s2;
+  const C det = a11 * a22 - a12 * a12;
+  const C x1 = a22 * force_n / det, x7 = -a12 * force_n / det;
+  return std::abs(kc * (s1 * x1 + s2 * x7));
+}
+
+TEST(SurgeIntegrator, LinearHarmonicResponseMatchesClosedForm) {  // surge-1, EVIDENCE-OF: EQ-SURGE-1..4
+  const SurgeParameters p = tug_and_tow();
+  const LinearLine line{4.0e5, 2.0e4, 1.0e9};  // a wire-like 400 kN/m, never slack
+  const double w = 2.0 * kPi / 20.0;           // 20 s period, 50 periods in the record
+  const DayForcing f = harmonic_tug_force(1.0e5, w, 0.25, 4000);
+  IntegratorOptions o;
+  o.warmup_s = 3000.0;  // the slowest mode decays as exp(-(B1+B7)/(M1+M7) t): e^-40 after 3000 s
+  const DayStatistics s = integrate_day(p, f, line, o);
+  const double expected = linear_tension_amplitude(p, line, 1.0e5, w);
+  // Sampling the peak every h <= 0.25 s of a 20 s period misses it by at most 1 - cos(pi/80) = 0.08 %.
+  constexpr double kPeakSamplingRelTol = 1.5e-3;
+  EXPECT_REL_CLOSE(s.max_tension_n, expected, kPeakSamplingRelTol);
+  EXPECT_REL_CLOSE(-s.min_tension_n, expected, kPeakSamplingRelTol);
+  EXPECT_EQ(s.snatch_events, 0);
+  EXPECT_EQ(s.slack_time_s, 0.0);
+}
+
+TEST(SurgeIntegrator, ResonanceNearTheRelativeModeIsResolved) {  // surge-1 at resonance
+  const SurgeParameters p = tug_and_tow();
+  const LinearLine line{4.0e5, 2.0e4, 1.0e9};
+  // Relative-mode natural frequency sqrt(k (c1^2/M1 + c2^2/M7)) = 0.419 rad/s; force near it.
+  const double w_n = std::sqrt(line.k * (0.95 * 0.95 / 2.5e6 + 0.98 * 0.98 / 1.0e7));
+  const double period = 2.0 * kPi / w_n;
+  const double dt = period / 40.0;
+  const DayForcing f = harmonic_tug_force(1.0e5, 2.0 * kPi / (40.0 * dt), dt, 40 * 60);
+  IntegratorOptions o;
+  o.warmup_s = 4000.0;
+  const DayStatistics s = integrate_day(p, f, line, o);
+  const double expected = linear_tension_amplitude(p, line, 1.0e5, 2.0 * kPi / (40.0 * dt));
+  constexpr double kResonantRelTol = 3e-3;  // peak sampling (0.3 %) at 40 samples per period
+  EXPECT_REL_CLOSE(s.max_tension_n, expected, kResonantRelTol);
+  EXPECT_GT(expected, 3.0 * 1.0e5);  // it really is resonant: dynamic amplification
+}
+
+TEST(SurgeIntegrator, ConvergesWithForcingInterval) {  // surge-2
+  // A cubic-stiffening line (snap-like) driven by two harmonics.
+  struct CubicLine {
+    double tension(double xi, double xi_dot) const {
+      return std::max(-2.0e5, 3.0e5 * xi + 1.0e5 * xi * xi * xi + 1.0e4 * xi_dot);
+    }
+    double stiffness(double xi, double) const { return 3.0e5 + 3.0e5 * xi * xi; }
+    double damping(double, double) const { return 1.0e4; }
+    double mean_tension_n() const { return 2.0e5; }
+  };
+  const SurgeParameters p = tug_and_tow();
+  auto run = [&](double dt, std::vector<double>* trace) {
+    const std::size_t n = static_cast<std::size_t>(std::llround(1200.0 / dt));
+    DayForcing f = harmonic_tug_force(3.0e4, 2.0 * kPi / 30.0, dt, n);
+    for (std::size_t i = 0; i < n; ++i) {
+      f.xi_ns_m[i] = 0.3 * std::sin(2.0 * kPi / 10.0 * static_cast<double>(i) * dt);
+      f.xi_ns_dot_m_s[i] = 0.3 * 2.0 * kPi / 10.0 * std::cos(2.0 * kPi / 10.0 * static_cast<double>(i) * dt);
+    }
+    IntegratorOptions o;
+    o.warmup_s = 2400.0;
+    return integrate_day(p, f, CubicLine{}, o, trace);
+  };
+  std::vector<double> coarse, fine, finest;
+  run(0.5, &coarse);
+  run(0.25, &fine);
+  const DayStatistics s = run(0.125, &finest);
+  // Compare tau at the common times t = (k + 1) 0.5 s: trace[k] = tau((k + 1) dt).
+  double d_coarse = 0.0, d_fine = 0.0;
+  for (std::size_t k = 0; k < coarse.size(); ++k) {
+    d_coarse = std::max(d_coarse, std::abs(coarse[k] - finest[4 * k + 3]));
+    d_fine = std::max(d_fine, std::abs(fine[2 * k + 1] - finest[4 * k + 3]));
+  }
+  // Fourth-order convergence would shrink the error 16-fold per halving; ask for 4-fold.
+  EXPECT_LT(d_fine, 0.25 * d_coarse);
+  constexpr double kConvergedRelTol = 1e-3;  // of the day's largest tension
+  EXPECT_LT(d_fine, kConvergedRelTol * s.max_tension_n);
+}
+
+TEST(SurgeIntegrator, SlackLineCountsSlackTimeAndSnatches) {  // surge-3
+  // Immovable vessels (huge masses): xi = xi_ns exactly, tau = max(-T, k xi).
+  SurgeParameters p = tug_and_tow();
+  p.tug_mass_kg = p.tow_mass_kg = 1e18;
+  const LinearLine line{4.0e5, 0.0, 5.0e4};
+  const double dt = 0.05;
+  const std::size_t n = 20000;  // 1000 s, 50 periods of 20 s
+  DayForcing f = harmonic_tug_force(0.0, 1.0, dt, n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) * dt;
+    f.xi_ns_m[i] = 1.0 * std::sin(2.0 * kPi / 20.0 * t);
+    f.xi_ns_dot_m_s[i] = 1.0 * 2.0 * kPi / 20.0 * std::cos(2.0 * kPi / 20.0 * t);
+  }
+  IntegratorOptions o;
+  o.warmup_s = 100.0;
+  const DayStatistics s = integrate_day(p, f, line, o);
+  EXPECT_NEAR(s.min_tension_n, -5.0e4, 1e-6);  // clamped at -T
+  EXPECT_REL_CLOSE(s.max_tension_n, 4.0e5, 1e-4);
+  EXPECT_EQ(s.snatch_events, 50);  // one slack-to-taut transition per cycle
+  // Slack while sin(w t) < -T/k = -0.125: a fraction 1/2 - asin(0.125)/pi = 0.46009 of the time.
+  const double expected_slack_s = 1000.0 * (0.5 - std::asin(0.125) / kPi);
+  constexpr double kSlackTimeAbsTol_s = 50 * 2 * 0.05;  // one substep of error at each of 100 crossings
+  EXPECT_ABS_CLOSE(s.slack_time_s, expected_slack_s, kSlackTimeAbsTol_s);
+}
+
+}  // namespace
+}  // namespace towdb::simulation
