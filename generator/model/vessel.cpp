@@ -14,15 +14,15 @@ double Hull::block_coefficient() const {
   return displacement_volume_m3() / (length_pp_m * beam_m * draft_m);
 }
 
-double DragCurve::coefficient_at(double speed_m_s) const {
+double DragCurve::coefficient_at(double query_speed_m_s) const {
   TOWDB_ASSERT(!this->speed_m_s.empty());
   const auto& v = this->speed_m_s;
   const auto& c = total_resistance_coefficient;
-  if (speed_m_s <= v.front()) return c.front();
-  if (speed_m_s >= v.back()) return c.back();
-  const auto it = std::upper_bound(v.begin(), v.end(), speed_m_s);
+  if (query_speed_m_s <= v.front()) return c.front();
+  if (query_speed_m_s >= v.back()) return c.back();
+  const auto it = std::upper_bound(v.begin(), v.end(), query_speed_m_s);
   const std::size_t i = static_cast<std::size_t>(it - v.begin());
-  const double t = (speed_m_s - v[i - 1]) / (v[i] - v[i - 1]);
+  const double t = (query_speed_m_s - v[i - 1]) / (v[i] - v[i - 1]);
   return c[i - 1] + t * (c[i] - c[i - 1]);
 }
 
