@@ -4,16 +4,21 @@
 // Method: a parametric sectional-area curve matched to the prismatic
 // coefficient and the LCB, a parametric waterline-beam curve matched to the
 // waterplane coefficient, a constant draft, and sigma = A / (B T) per station.
-// Literature: the power-law area curve is the classic "parabolic" sectional
-// area curve of preliminary design (Lackenby, Trans. RINA 92, 1950, uses the
-// same C_p / LCB pair as the controls); the waterplane estimate is
-// Papanikolaou, Ship Design (Springer 2014) eq. 2.83 = Schneekluth & Bertram,
-// Ship Design for Efficiency and Economy (1998) for normal sections.
+// Literature: power-law ("parabolic") sectional-area and waterline curves are
+// a common preliminary-design idealisation; C_p and LCB are the usual controls
+// of a sectional-area curve (Lackenby, "On the systematic geometrical variation
+// of ship forms", Trans. INA 92, 1950). The default waterplane coefficient is
+// Papanikolaou, Ship Design (Springer 2014) eq. 2.83, for normal sections.
 //
 // Conventions (same as model/vessel.hpp; re-derived here):
 //   x from midships (half of L_pp), positive forward; stations ordered aft to
 //   forward, x_0 = -L/2 (aft perpendicular), x_{N-1} = +L/2 (fore perp.).
 //   xi = 2 x / L in [-1, 1]; LCB positive forward of midships.
+//   Sign check (done for this module): the moment sum_i w_i x_i A_i gains from
+//   the fore half (x > 0) and loses from the aft half, so filling the fore half
+//   (larger n_f) at fixed volume (smaller n_a) moves the LCB forward: the LCB
+//   is increasing in the fore half's area, which is what the bisection of
+//   EQ-HULLFORM-4 brackets.
 //
 // Units: inputs and outputs SI: length_pp_m, beam_m, draft_m, lcb_m and the
 //   station x_m, beam_m, draft_m in m; coefficients dimensionless.
