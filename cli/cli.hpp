@@ -24,6 +24,7 @@ struct Context {
 io::ShipCatalog load_catalog(const Context& ctx);
 
 void add_ships_command(CLI::App& app, Context& ctx);
+void add_simulate_command(CLI::App& app, Context& ctx);
 
 }  // namespace towdb::cli
 

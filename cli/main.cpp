@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   app.add_option("--ships-dir", ctx.ships_dir,
                  "Directory of vessel files (default: $TOWDB_SHIPS_DIR or the bundled ships/)");
   towdb::cli::add_ships_command(app, ctx);
+  towdb::cli::add_simulate_command(app, ctx);
 
   try {
     app.parse(argc, argv);

@@ -77,6 +77,9 @@ struct DayStatistics {
   double slack_time_s = 0.0;    // time with the line slack (T + tau <= 0)
   int snatch_events = 0;        // slack -> taut transitions
   long substeps = 0;            // RK4 steps taken (for cost reporting)
+  double tension_sum_n = 0.0;   // sum of tau over the day's forcing samples (for the mean)
+  double tension_sum_sq_n2 = 0.0;  // sum of tau^2 over them (for the variance)
+  long samples = 0;             // forcing samples recorded
 };
 
 // The tension law: a type with
@@ -195,7 +198,12 @@ DayStatistics integrate_day(const SurgeParameters& p, const DayForcing& f, const
         if (slack) stats.slack_time_s += h;
         if (was_slack && !slack) ++stats.snatch_events;
         was_slack = slack;
-        if (trace && j + 1 == m) (*trace)[step - warmup_samples] = tau;  // tau at sample i + 1
+        if (j + 1 == m) {  // tau at sample i + 1
+          stats.tension_sum_n += tau;
+          stats.tension_sum_sq_n2 += tau * tau;
+          ++stats.samples;
+          if (trace) (*trace)[step - warmup_samples] = tau;
+        }
       }
     }
     stats.substeps += m;

@@ -1,0 +1,22 @@
+// PNG plots through gnuplot (Debian package gnuplot-nox), written from data
+// files in a temporary directory. A missing gnuplot is a clear error.
+#ifndef TOWDB_CLI_PLOT_HPP
+#define TOWDB_CLI_PLOT_HPP
+
+#include <string>
+#include <vector>
+
+namespace towdb::cli {
+
+// Two panels: the daily maxima as a density histogram against the fitted
+// Type I density (like thesis Figure 4-2), and the worst day's dynamic
+// tension around its maximum. Tensions in kips, alpha in 1/kip.
+void write_simulation_plot(const std::string& png_path, const std::vector<double>& maxima_kips, double gumbel_u_kips,
+                           double gumbel_alpha_per_kip, const std::vector<double>& trace_kips, double dt_s, int day);
+
+// Runs a gnuplot script; throws Error with gnuplot's message on failure.
+void run_gnuplot(const std::string& script);
+
+}  // namespace towdb::cli
+
+#endif  // TOWDB_CLI_PLOT_HPP

@@ -1,0 +1,459 @@
+#include "simulation/case_runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <mutex>
+
+#include "common/constants.hpp"
+#include "common/error.hpp"
+#include "common/parallel_for.hpp"
+#include "common/units.hpp"
+#include "coupled/coupled.hpp"
+#include "propulsion/hull_damping.hpp"
+#include "statistics/bootstrap.hpp"
+#include "statistics/distributions.hpp"
+#include "statistics/fit.hpp"
+#include "statistics/goodness_of_fit.hpp"
+
+namespace towdb::simulation {
+
+namespace {
+
+using Complex = std::complex<double>;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The thesis's speed step for the wave-induced surge damping (3.5): 1 ft/s.
+constexpr double kWaveDampingSpeedStep_m_s = units::ft_s_to_m_s(1.0);
+
+// Record-series indices.
+enum Linear : std::size_t { kF1Tug = 0, kF1Tow = 1, kXiNs = 2, kXiNsDot = 3, kLinearCount = 4 };
+enum Drift : std::size_t { kF2Tug = 0, kF2Tow = 1, kDriftCount = 2 };
+
+// The polynomial towline (towline EQ-TOWLINE-11/-13 with the slack limit) in
+// the form simulation/surge.hpp integrates.
+// EQ-CASE-1 (beyond the thesis): the polynomial is only known inside the
+// range of the cable-dynamics runs it was fitted to, [xi_min, xi_max] x
+// [-v_max, v_max]. Outside it a cubic can turn over (negative stiffness)
+// and run away; there it is continued by its tangent plane at the nearest
+// point of the range, with the slopes floored at 0 (tension never falls as the
+// line is stretched further or faster):
+//   tau = P(xc, vc) + max(0, dP/dxi) (xi - xc) + max(0, dP/dxi') (xi' - vc),
+//   xc = clamp(xi, xi_min, xi_max), vc = clamp(xi', -v_max, v_max).
+// Inside the range this is exactly the thesis's polynomial.
+struct PolynomialLaw {
+  const towline::TowlineFit* fit;
+  towline::AboveBreakingModel model;
+  double x_lo, x_hi, v_max, x_b, k_spring, slack;
+
+  PolynomialLaw(const towline::TowlineFit* f, towline::AboveBreakingModel m)
+      : fit(f),
+        model(m),
+        x_lo(f->summary().fit_xi_min_m),
+        x_hi(f->summary().fit_xi_max_m),
+        v_max(f->summary().fit_xi_dot_max_m_s),
+        x_b(f->summary().spring_onset_extension_m),
+        k_spring(f->summary().straight_spring_n_m),
+        slack(f->summary().slack_limit_n) {}
+
+  double p(double x, double v) const { return fit->coefficients().evaluate_n(x, v); }
+  double dp_dx(double x, double v) const {
+    const auto& a = fit->coefficients().a;
+    return a[0] + 2.0 * a[2] * x + a[3] * v + 3.0 * a[5] * x * x + 2.0 * a[6] * x * v + a[7] * v * v;
+  }
+  double dp_dv(double x, double v) const {
+    const auto& a = fit->coefficients().a;
+    return a[1] + a[3] * x + 2.0 * a[4] * v + a[6] * x * x + 2.0 * a[7] * x * v + 3.0 * a[8] * v * v;
+  }
+  // EQ-CASE-1 without the spring and slack limits.
+  double extended(double x, double v) const {
+    const double xc = std::clamp(x, x_lo, x_hi), vc = std::clamp(v, -v_max, v_max);
+    double tau = p(xc, vc);
+    if (x != xc) tau += std::max(0.0, dp_dx(xc, vc)) * (x - xc);
+    if (v != vc) tau += std::max(0.0, dp_dv(xc, vc)) * (v - vc);
+    return tau;
+  }
+  bool spring(double x) const { return model == towline::AboveBreakingModel::kStraightSpring && x > x_b; }
+  double unlimited(double x, double v) const {
+    return spring(x) ? extended(x_b, v) + k_spring * (x - x_b) : extended(x, v);
+  }
+  double tension(double x, double v) const { return std::max(unlimited(x, v), slack); }
+  double stiffness(double x, double v) const {
+    if (spring(x)) return k_spring;
+    const double xc = std::clamp(x, x_lo, x_hi), vc = std::clamp(v, -v_max, v_max);
+    const double d = dp_dx(xc, vc);
+    return x != xc ? std::max(0.0, d) : d;
+  }
+  double damping(double x, double v) const {
+    if (spring(x)) x = x_b;
+    const double xc = std::clamp(x, x_lo, x_hi), vc = std::clamp(v, -v_max, v_max);
+    const double d = dp_dv(xc, vc);
+    return v != vc ? std::max(0.0, d) : d;
+  }
+  double mean_tension_n() const { return -slack; }
+};
+
+// tau = a10 xi + a01 xi', never slack (the linear-limit check).
+struct LinearLaw {
+  double k, c;
+  double tension(double xi, double xd) const { return k * xi + c * xd; }
+  double stiffness(double, double) const { return k; }
+  double damping(double, double) const { return c; }
+  double mean_tension_n() const { return std::numeric_limits<double>::infinity(); }
+};
+
+// Linear interpolation of y(x) on an increasing grid, clamped at the ends.
+template <typename T>
+T interpolate(const std::vector<double>& x, const std::vector<T>& y, double xq) {
+  if (xq <= x.front()) return y.front();
+  if (xq >= x.back()) return y.back();
+  const auto it = std::upper_bound(x.begin(), x.end(), xq);
+  const std::size_t i = static_cast<std::size_t>(it - x.begin());
+  const double t = (xq - x[i - 1]) / (x[i] - x[i - 1]);
+  return y[i - 1] + (y[i] - y[i - 1]) * t;
+}
+
+}  // namespace
+
+struct CaseModel {
+  CaseInputs inputs;
+  CaseOptions options;
+  std::shared_ptr<const towline::TowlineFit> fit;
+  SurgeParameters surge;
+  std::unique_ptr<sea::DaySynthesizer> synthesizer;
+  // Per component: the first-order transfer functions (for the linear check).
+  std::vector<Complex> h_f1_tug, h_f1_tow, h_xi_ns;
+  CaseResult partial;  // everything known before the days are simulated
+};
+
+void CaseInputs::validate() const {
+  if (!tug || !tow) throw InputError("case: tug and tow must be given");
+  if (tug->role != model::VesselRole::kTug) throw InputError("case: '" + tug->name + "' is not a tug");
+  model::validate(towline);
+  require_in_range("case: speed (kt)", units::m_s_to_kt(speed_m_s), 0.5, 20.0);
+  sea.validate();
+  require_positive("case: mean tension (N)", mean_tension_n);
+  require_input(mean_tension_n < towline.breaking_strength_n(), "case: mean tension (lbf)",
+                units::n_to_lbf(mean_tension_n),
+                "must be below the towline's breaking strength " +
+                    format_value(units::n_to_lbf(towline.breaking_strength_n())) + " lbf");
+  require_in_range("case: days", days, 3, 1000000);
+}
+
+void CaseOptions::validate() const {
+  towline.validate();
+  response.validate();
+  require_in_range("case options: response_frequencies", response_frequencies, 8, 2000);
+  tug_propeller.validate();
+  tow_propeller.validate();
+  record.validate();
+  integrator.validate();
+  require_in_range("case options: confidence_level", confidence_level, 0.5, 0.999);
+  require_in_range("case options: bootstrap_replicates", bootstrap_replicates, 100, 1000000);
+}
+
+std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const CaseOptions& options) {
+  inputs.validate();
+  options.validate();
+  auto m = std::make_shared<CaseModel>();
+  m->inputs = inputs;
+  m->options = options;
+  CaseResult& r = m->partial;
+  const model::Vessel& tug = *inputs.tug;
+  const model::Vessel& tow = *inputs.tow;
+  const double u = inputs.speed_m_s;
+  const double h = inputs.mean_tension_n;
+
+  // 1. Towline.
+  auto t0 = Clock::now();
+  m->fit = towline::global_fit_cache().get(inputs.towline, towline::TowPoints{tug.tow_point.z_m, tow.tow_point.z_m},
+                                           h, options.towline);
+  r.towline = m->fit->summary();
+  r.timings.towline_s = seconds_since(t0);
+
+  // 2-4. Hydrodynamics, damping, coupling.
+  t0 = Clock::now();
+  const sea::RecordPlan plan(inputs.sea, u, options.record);
+  const auto& comps = plan.components();
+  r.record_time_step_s = plan.time_step_s();
+  r.record_samples = plan.samples();
+  r.wave_components = comps.size();
+  r.retained_variance_fraction = plan.retained_variance_m2() / plan.spectrum_variance_m2();
+
+  coupled::LineGeometry geometry;
+  geometry.tug_angle_rad = r.towline.tug_angle_rad;
+  geometry.tow_angle_rad = r.towline.tow_angle_rad;
+  geometry.tug_point = tug.tow_point;
+  geometry.tow_point = tow.tow_point;
+  geometry.separation_m = -tug.tow_point.x_m + r.towline.span_m + tow.tow_point.x_m;
+  r.separation_m = geometry.separation_m;
+  // The linearised line of the 12-DOF model: a10 and a01 of the polynomial.
+  // A slack wire's fit can give a10 <= 0 (towline module, weak point 3);
+  // then the static catenary stiffness dH/dX stands in (always > 0).
+  const double a10 = m->fit->coefficients().a10();
+  const coupled::LinearLine line{a10 > 0.0 ? a10 : r.towline.static_stiffness_n_m,
+                                 std::max(0.0, m->fit->coefficients().a01())};
+
+  const propulsion::SurgeDamping tug_damping = propulsion::tug_surge_damping(tug, u, h, {}, options.tug_propeller);
+  const propulsion::SurgeDamping tow_damping = propulsion::tow_surge_damping(tow, u, {}, options.tow_propeller);
+  r.tug_hull_damping_n_s_m = tug_damping.hull_n_s_m;
+  r.tug_propeller_damping_n_s_m = tug_damping.propeller_n_s_m;
+  r.tow_hull_damping_n_s_m = tow_damping.hull_n_s_m;
+  r.tow_propeller_damping_n_s_m = tow_damping.propeller_n_s_m;
+
+  // Per wave system: responses on a grid spanning its components.
+  const std::size_t n_systems = inputs.sea.systems.size();
+  struct SystemGrid {
+    std::vector<double> omega;
+    std::vector<Complex> f1_tug, f1_tow, xi_p, xi_q;
+    std::vector<double> drift_tug, drift_tow;
+    double heading_rad = 0.0;
+    std::vector<seakeeping::VesselResponse> tug_response, tow_response;  // at U
+  };
+  std::vector<SystemGrid> grids(n_systems);
+  for (std::size_t s = 0; s < n_systems; ++s) {
+    const sea::WaveSystem& system = inputs.sea.systems[s];
+    double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+    for (const auto& c : comps) {
+      if (c.system != static_cast<int>(s)) continue;
+      lo = std::min(lo, c.omega_rad_s);
+      hi = std::max(hi, c.omega_rad_s);
+    }
+    SystemGrid& g = grids[s];
+    g.heading_rad = system.heading_rad;
+    if (!(hi > lo)) continue;  // no component of this system survived the cut-off
+    const int n = options.response_frequencies;
+    for (int i = 0; i < n; ++i) g.omega.push_back(lo + (hi - lo) * i / (n - 1));
+    g.tug_response = seakeeping::compute_response(tug, u, system.heading_rad, g.omega, options.response);
+    g.tow_response = seakeeping::compute_response(tow, u, system.heading_rad, g.omega, options.response);
+    const auto spectrum = [&system](double w) { return system.spectrum.density_m2_s(w); };
+    const double r_tug_u = seakeeping::mean_added_resistance_n(g.tug_response, spectrum);
+    const double r_tow_u = seakeeping::mean_added_resistance_n(g.tow_response, spectrum);
+    r.tug_added_resistance_n += r_tug_u;
+    r.tow_added_resistance_n += r_tow_u;
+    if (options.wave_surge_damping) {
+      const double u2 = u + kWaveDampingSpeedStep_m_s;
+      const auto r_tug2 = seakeeping::compute_response(tug, u2, system.heading_rad, g.omega, options.response);
+      const auto r_tow2 = seakeeping::compute_response(tow, u2, system.heading_rad, g.omega, options.response);
+      r.tug_wave_damping_n_s_m +=
+          (seakeeping::mean_added_resistance_n(r_tug2, spectrum) - r_tug_u) / kWaveDampingSpeedStep_m_s;
+      r.tow_wave_damping_n_s_m +=
+          (seakeeping::mean_added_resistance_n(r_tow2, spectrum) - r_tow_u) / kWaveDampingSpeedStep_m_s;
+    }
+  }
+  // A negative wave-induced damping (a resistance that falls with speed) is
+  // kept: it is physics. The total surge damping must stay positive.
+  const coupled::SurgeDampings dampings{tug_damping.total_n_s_m + r.tug_wave_damping_n_s_m,
+                                        tow_damping.total_n_s_m + r.tow_wave_damping_n_s_m};
+  require_input(dampings.tug_n_s_m > 0.0, "tug total surge damping (N s/m)", dampings.tug_n_s_m,
+                "must be positive (hull + propeller + wave-induced)");
+  require_input(dampings.tow_n_s_m > 0.0, "tow total surge damping (N s/m)", dampings.tow_n_s_m,
+                "must be positive (hull + wave-induced)");
+  for (std::size_t s = 0; s < n_systems; ++s) {
+    SystemGrid& g = grids[s];
+    if (g.omega.empty()) continue;
+    // Coupled once the surge dampings of all systems are known.
+    const auto c = coupled::couple(g.tug_response, g.tow_response, geometry, line, dampings);
+    for (const auto& ci : c) {
+      g.f1_tug.push_back(ci.surge_force_tug_n_per_m);
+      g.f1_tow.push_back(ci.surge_force_tow_n_per_m);
+      g.xi_p.push_back(ci.xi_ns_p);
+      g.xi_q.push_back(ci.xi_ns_q);
+      // Newman's approximation needs D >= 0; a negative added resistance
+      // (small, following seas) gives no slowly varying force here.
+      g.drift_tug.push_back(std::max(0.0, ci.drift_tug_n_per_m2));
+      g.drift_tow.push_back(std::max(0.0, ci.drift_tow_n_per_m2));
+    }
+  }
+
+  // Transfer functions per component (EQ-COUPLED-4: the tow's lag applied here).
+  std::vector<std::vector<Complex>> linear(kLinearCount, std::vector<Complex>(comps.size()));
+  std::vector<std::vector<double>> drift(kDriftCount, std::vector<double>(comps.size(), 0.0));
+  m->h_f1_tug.resize(comps.size());
+  m->h_f1_tow.resize(comps.size());
+  m->h_xi_ns.resize(comps.size());
+  for (std::size_t j = 0; j < comps.size(); ++j) {
+    const auto& c = comps[j];
+    const SystemGrid& g = grids[static_cast<std::size_t>(c.system)];
+    const Complex lag = std::exp(Complex(0.0, c.wavenumber_rad_m * geometry.separation_m * std::cos(c.heading_rad)));
+    const Complex f1_tug = interpolate(g.omega, g.f1_tug, c.omega_rad_s);
+    const Complex f1_tow = interpolate(g.omega, g.f1_tow, c.omega_rad_s) * lag;
+    const Complex xi = interpolate(g.omega, g.xi_p, c.omega_rad_s) + interpolate(g.omega, g.xi_q, c.omega_rad_s) * lag;
+    linear[kF1Tug][j] = f1_tug;
+    linear[kF1Tow][j] = f1_tow;
+    linear[kXiNs][j] = xi;
+    linear[kXiNsDot][j] = Complex(0.0, c.encounter_omega_rad_s) * xi;
+    m->h_f1_tug[j] = f1_tug;
+    m->h_f1_tow[j] = f1_tow;
+    m->h_xi_ns[j] = xi;
+    if (options.second_order_forces) {
+      drift[kF2Tug][j] = interpolate(g.omega, g.drift_tug, c.omega_rad_s);
+      drift[kF2Tow][j] = interpolate(g.omega, g.drift_tow, c.omega_rad_s);
+    }
+  }
+  m->synthesizer = std::make_unique<sea::DaySynthesizer>(plan, linear, drift);
+
+  m->surge.tug_mass_kg = tug.hull.displacement_kg * (1.0 + tug.hull.surge_added_mass_ratio);
+  m->surge.tow_mass_kg = tow.hull.displacement_kg * (1.0 + tow.hull.surge_added_mass_ratio);
+  m->surge.tug_damping_n_s_m = dampings.tug_n_s_m;
+  m->surge.tow_damping_n_s_m = dampings.tow_n_s_m;
+  m->surge.cos_alpha_tug = std::cos(r.towline.tug_angle_rad);
+  m->surge.cos_alpha_tow = std::cos(r.towline.tow_angle_rad);
+  m->surge.validate();
+  r.tug_mass_kg = m->surge.tug_mass_kg;
+  r.tow_mass_kg = m->surge.tow_mass_kg;
+  r.timings.hydrodynamics_s = seconds_since(t0);
+  return m;
+}
+
+DayForcing day_forcing(const CaseModel& m, std::uint64_t seed, std::uint64_t day) {
+  auto ws = m.synthesizer->make_workspace();
+  m.synthesizer->synthesize(seed, day, ws);
+  DayForcing f;
+  f.dt_s = m.synthesizer->plan().time_step_s();
+  const auto f1_tug = ws.linear(kF1Tug), f1_tow = ws.linear(kF1Tow);
+  const auto f2_tug = ws.drift(kF2Tug), f2_tow = ws.drift(kF2Tow);
+  const auto xi = ws.linear(kXiNs), xi_dot = ws.linear(kXiNsDot);
+  const std::size_t n = f1_tug.size();
+  f.tug_force_n.resize(n);
+  f.tow_force_n.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    f.tug_force_n[i] = f1_tug[i] + f2_tug[i];
+    f.tow_force_n[i] = f1_tow[i] + f2_tow[i];
+  }
+  f.xi_ns_m.assign(xi.begin(), xi.end());
+  f.xi_ns_dot_m_s.assign(xi_dot.begin(), xi_dot.end());
+  return f;
+}
+
+DayStatistics simulate_day(const CaseModel& m, const DayForcing& forcing, const IntegratorOptions& options,
+                           std::vector<double>* trace) {
+  if (m.options.tension_law == TensionLaw::kLinear) {
+    const LinearLaw law{m.fit->coefficients().a10(), m.fit->coefficients().a01()};
+    return integrate_day(m.surge, forcing, law, options, trace);
+  }
+  const PolynomialLaw law(m.fit.get(), m.options.above_breaking);
+  return integrate_day(m.surge, forcing, law, options, trace);
+}
+
+double linear_tension_variance_n2(const CaseInputs& inputs, const CaseOptions& options) {
+  const auto m = prepare_case(inputs, options);
+  const auto& comps = m->synthesizer->plan().components();
+  const SurgeParameters& p = m->surge;
+  const double k = m->fit->coefficients().a10(), c = m->fit->coefficients().a01();
+  const double c1 = p.cos_alpha_tug, c2 = p.cos_alpha_tow;
+  double variance = 0.0;
+  for (std::size_t j = 0; j < comps.size(); ++j) {
+    const double w = comps[j].encounter_omega_rad_s;
+    const Complex kc(k, w * c);
+    // EQ-SURGE-1..3 with tau = kc (c1 X1 - c2 X7 + xi_ns), harmonic at w.
+    const Complex a11 = -w * w * p.tug_mass_kg + Complex(0, w * p.tug_damping_n_s_m) + kc * c1 * c1;
+    const Complex a22 = -w * w * p.tow_mass_kg + Complex(0, w * p.tow_damping_n_s_m) + kc * c2 * c2;
+    const Complex a12 = -kc * c1 * c2;
+    const Complex b1 = m->h_f1_tug[j] - kc * c1 * m->h_xi_ns[j];
+    const Complex b2 = m->h_f1_tow[j] + kc * c2 * m->h_xi_ns[j];
+    const Complex det = a11 * a22 - a12 * a12;
+    const Complex x1 = (b1 * a22 - a12 * b2) / det;
+    const Complex x7 = (a11 * b2 - a12 * b1) / det;
+    const Complex tau = kc * (c1 * x1 - c2 * x7 + m->h_xi_ns[j]);
+    variance += 0.5 * comps[j].amplitude_m * comps[j].amplitude_m * std::norm(tau);
+  }
+  return variance;
+}
+
+CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options) {
+  const auto start = Clock::now();
+  const auto m = prepare_case(inputs, options);
+  CaseResult r = m->partial;
+  const int days = inputs.days;
+  r.days.resize(static_cast<std::size_t>(days));
+  std::vector<double> synth_s(static_cast<std::size_t>(days)), integ_s(static_cast<std::size_t>(days));
+  std::vector<long> substeps(static_cast<std::size_t>(days));
+  std::mutex progress_mutex;
+  int done = 0;
+  parallel_for(0, days, options.num_threads, [&](std::int64_t d) {
+    const std::size_t i = static_cast<std::size_t>(d);
+    auto t = Clock::now();
+    const DayForcing f = day_forcing(*m, inputs.seed, static_cast<std::uint64_t>(d));
+    synth_s[i] = seconds_since(t);
+    t = Clock::now();
+    const DayStatistics s = simulate_day(*m, f, options.integrator);
+    integ_s[i] = seconds_since(t);
+    DayResult& out = r.days[i];
+    out.max_dynamic_tension_n = s.max_tension_n;
+    out.slack_time_s = s.slack_time_s;
+    out.snatch_events = s.snatch_events;
+    const double n = static_cast<double>(s.samples);
+    out.tension_mean_n = s.tension_sum_n / n;
+    out.tension_variance_n2 = std::max(0.0, s.tension_sum_sq_n2 / n - out.tension_mean_n * out.tension_mean_n);
+    substeps[i] = s.substeps;
+    if (options.progress) {
+      std::lock_guard<std::mutex> lock(progress_mutex);
+      options.progress(++done, days);
+    }
+  });
+  for (int d = 0; d < days; ++d) {
+    const std::size_t i = static_cast<std::size_t>(d);
+    r.timings.synthesis_s += synth_s[i];
+    r.timings.integration_s += integ_s[i];
+    r.substeps += substeps[i];
+    r.slack_fraction += r.days[i].slack_time_s;
+    r.snatch_events_per_day += r.days[i].snatch_events;
+  }
+  r.slack_fraction /= days * m->synthesizer->plan().duration_s();
+  r.snatch_events_per_day /= days;
+
+  // 7. Statistics of the daily maxima.
+  auto t = Clock::now();
+  std::vector<double> maxima(r.days.size());
+  for (std::size_t i = 0; i < maxima.size(); ++i) maxima[i] = r.days[i].max_dynamic_tension_n;
+  CaseStatistics& st = r.statistics;
+  double mean = 0.0;
+  for (double x : maxima) mean += x;
+  mean /= static_cast<double>(maxima.size());
+  double var = 0.0;
+  for (double x : maxima) var += (x - mean) * (x - mean);
+  var /= static_cast<double>(maxima.size() - 1);
+  st.daily_max_mean_n = mean;
+  st.daily_max_variance_n2 = var;
+  st.max_daily_max_n = *std::max_element(maxima.begin(), maxima.end());
+  const statistics::Gumbel g = statistics::fit_gumbel_moments(maxima);
+  st.gumbel_u_n = g.location;
+  st.gumbel_alpha_per_n = g.alpha();
+  st.dynamic_999_n = g.quantile(0.999);
+  st.dynamic_99_n = g.quantile(0.99);
+  const auto enough = [&](double f) { return static_cast<double>(maxima.size()) >= 5.0 / (1.0 - f); };
+  st.empirical_999_n = enough(0.999) ? statistics::empirical_quantile(maxima, 0.999)
+                                     : std::numeric_limits<double>::quiet_NaN();
+  st.empirical_99_n = enough(0.99) ? statistics::empirical_quantile(maxima, 0.99)
+                                   : std::numeric_limits<double>::quiet_NaN();
+  statistics::BootstrapOptions bo;
+  bo.level = options.confidence_level;
+  bo.replicates = options.bootstrap_replicates;
+  bo.seed = inputs.seed;
+  bo.num_threads = options.num_threads;
+  const auto ci = statistics::bootstrap_quantile_interval(maxima, 0.999, bo);
+  st.ci_level = ci.level;
+  st.ci_low_n = ci.lower;
+  st.ci_high_n = ci.upper;
+  const auto ml = statistics::fit_gumbel_ml(maxima);
+  st.gumbel_ml_u_n = ml.distribution.location;
+  st.gumbel_ml_alpha_per_n = ml.distribution.alpha();
+  const auto gev = statistics::fit_gev_ml(maxima);
+  st.gev_mu_n = gev.distribution.location;
+  st.gev_sigma_n = gev.distribution.scale;
+  st.gev_xi = gev.distribution.shape;
+  st.anderson_darling = statistics::anderson_darling(maxima, g);
+  st.ppcc = statistics::probability_plot_correlation(maxima, g);
+  r.above_breaking_strength = inputs.mean_tension_n + st.dynamic_999_n > inputs.towline.breaking_strength_n();
+  r.timings.statistics_s = seconds_since(t);
+  r.timings.total_s = seconds_since(start);
+  return r;
+}
+
+}  // namespace towdb::simulation

@@ -1,0 +1,347 @@
+#include "towline/towline.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "common/error.hpp"
+#include "common/parallel_for.hpp"
+
+namespace towdb::towline {
+
+const char* to_string(AboveBreakingModel model) {
+  switch (model) {
+    case AboveBreakingModel::kPolynomial: return "polynomial";
+    case AboveBreakingModel::kStraightSpring: return "straight-spring";
+  }
+  return "?";
+}
+
+void TowlineFitOptions::validate() const {
+  catenary.validate();
+  dynamics.validate();
+  excitation.validate();
+  require_in_range("towline_fit.min_elements", min_elements, 4, 1 << 16);
+  require_in_range("towline_fit.max_elements", max_elements, 2 * min_elements, 1 << 18);
+  require_in_range("towline_fit.resolution_tolerance", resolution_tolerance, 1e-6, 0.5);
+  require_in_range("towline_fit.max_steps_per_period", max_steps_per_period, dynamics.steps_per_period,
+                   1 << 20);
+}
+
+TowlineFit::TowlineFit(Catenary catenary, FitSummary summary, std::vector<HarmonicRun> runs)
+    : catenary_(std::move(catenary)), summary_(std::move(summary)), runs_(std::move(runs)) {}
+
+double TowlineFit::dynamic_tension_n(double xi_m, double xi_dot_m_s, AboveBreakingModel model) const {
+  double tau = 0.0;
+  const double xi_b = summary_.spring_onset_extension_m;
+  if (model == AboveBreakingModel::kStraightSpring && xi_m > xi_b) {
+    tau = polynomial_n(xi_b, xi_dot_m_s) + summary_.straight_spring_n_m * (xi_m - xi_b);
+  } else {
+    tau = polynomial_n(xi_m, xi_dot_m_s);
+  }
+  return std::max(tau, summary_.slack_limit_n);
+}
+
+namespace {
+
+// RMS difference of two runs' tau at the same phases over the RMS of `fine`.
+double relative_rms_change(const HarmonicRun& coarse, const HarmonicRun& fine) {
+  double d2 = 0.0;
+  double t2 = 0.0;
+  for (std::size_t k = 0; k < fine.samples.size(); ++k) {
+    const double d = fine.samples[k].tau_n - coarse.samples[k].tau_n;
+    d2 += d * d;
+    t2 += fine.samples[k].tau_n * fine.samples[k].tau_n;
+  }
+  return t2 > 0.0 ? std::sqrt(d2 / t2) : std::sqrt(d2);
+}
+
+// Probe runs for the resolution search: the highest frequency at its largest
+// and smallest amplitude (shortest waves along the line, snap loads, the
+// lightly damped linear response), the middle frequency at its largest
+// amplitude and the lowest frequency at its largest (longest time steps).
+std::vector<std::size_t> probe_indices(const std::vector<Excitation>& set) {
+  std::vector<double> freqs;
+  for (const auto& e : set) {
+    if (std::find(freqs.begin(), freqs.end(), e.omega_rad_s) == freqs.end()) freqs.push_back(e.omega_rad_s);
+  }
+  std::sort(freqs.begin(), freqs.end());
+  auto extreme = [&](double w, bool largest) {
+    std::size_t best = set.size();
+    for (std::size_t i = 0; i < set.size(); ++i) {
+      if (set[i].omega_rad_s != w) continue;
+      if (best == set.size() || (largest ? set[i].amplitude_m > set[best].amplitude_m
+                                         : set[i].amplitude_m < set[best].amplitude_m)) {
+        best = i;
+      }
+    }
+    return best;
+  };
+  std::vector<std::size_t> probes = {extreme(freqs.back(), true), extreme(freqs.back(), false),
+                                     extreme(freqs[freqs.size() / 2], true), extreme(freqs.front(), true)};
+  std::sort(probes.begin(), probes.end());
+  probes.erase(std::unique(probes.begin(), probes.end()), probes.end());
+  return probes;
+}
+
+std::vector<HarmonicRun> run_set(const ShallowSagModel& model, const std::vector<Excitation>& set,
+                                 const std::vector<std::size_t>& indices, const DynamicsOptions& options,
+                                 int num_threads) {
+  std::vector<HarmonicRun> out(indices.size());
+  parallel_for(0, static_cast<std::int64_t>(indices.size()), num_threads, [&](std::int64_t i) {
+    const auto k = static_cast<std::size_t>(i);
+    const Excitation& e = set[indices[k]];
+    out[k] = model.run_harmonic(e.amplitude_m, e.omega_rad_s, options);
+  });
+  return out;
+}
+
+// Largest relative RMS change between two resolutions over the probes. Runs
+// that stopped after different cycle counts are compared after re-running the
+// shorter one for as many cycles, so a slowly decaying start-up transient is
+// not mistaken for discretisation error.
+double probe_change(const ShallowSagModel& model_a, std::vector<HarmonicRun>& runs_a,
+                    const DynamicsOptions& options_a, const ShallowSagModel& model_b,
+                    std::vector<HarmonicRun>& runs_b, const DynamicsOptions& options_b,
+                    const std::vector<Excitation>& set, const std::vector<std::size_t>& probes,
+                    int num_threads) {
+  std::vector<double> change(probes.size(), 0.0);
+  parallel_for(0, static_cast<std::int64_t>(probes.size()), num_threads, [&](std::int64_t i) {
+    const auto k = static_cast<std::size_t>(i);
+    const Excitation& e = set[probes[k]];
+    const int cycles = std::max(runs_a[k].cycles, runs_b[k].cycles);
+    if (runs_a[k].cycles < cycles) {
+      DynamicsOptions o = options_a;
+      o.min_cycles = o.max_cycles = cycles;
+      runs_a[k] = model_a.run_harmonic(e.amplitude_m, e.omega_rad_s, o);
+    }
+    if (runs_b[k].cycles < cycles) {
+      DynamicsOptions o = options_b;
+      o.min_cycles = o.max_cycles = cycles;
+      runs_b[k] = model_b.run_harmonic(e.amplitude_m, e.omega_rad_s, o);
+    }
+    change[k] = relative_rms_change(runs_a[k], runs_b[k]);
+  });
+  return *std::max_element(change.begin(), change.end());
+}
+
+}  // namespace
+
+std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towline,
+                                                    const TowPoints& points, double mean_tension_n,
+                                                    const TowlineFitOptions& options) {
+  options.validate();
+  model::validate(towline);
+  const double breaking_n = towline.breaking_strength_n();
+  require_input(mean_tension_n > 0.0 && mean_tension_n < breaking_n, "mean towline tension [N]",
+                mean_tension_n, "must be > 0 and below the breaking strength " + format_value(breaking_n) + " N");
+  Catenary cat = Catenary::solve(towline, points, mean_tension_n, options.catenary);
+  const std::vector<Excitation> set = excitation_set(options.excitation);
+
+  // Spatial resolution: probe runs at N and 2N elements until they agree;
+  // the coarser N is used, so the change is an estimate of its error.
+  const std::vector<std::size_t> probes = probe_indices(set);
+  DynamicsOptions dyn = options.dynamics;
+  int n = options.min_elements;
+  auto model = std::make_unique<ShallowSagModel>(cat, n);
+  std::vector<HarmonicRun> probe_runs = run_set(*model, set, probes, dyn, options.num_threads);
+  double space_change = 0.0;
+  for (int iteration = 1;; ++iteration) {
+    if (2 * n > options.max_elements) {
+      throw NumericalError("shallow-sag spatial resolution search: no convergence up to " +
+                           std::to_string(n) + " elements (iteration " + std::to_string(iteration) +
+                           ", residual RMS change " + format_value(space_change) + ")");
+    }
+    auto finer = std::make_unique<ShallowSagModel>(cat, 2 * n);
+    std::vector<HarmonicRun> finer_runs = run_set(*finer, set, probes, dyn, options.num_threads);
+    space_change = probe_change(*model, probe_runs, dyn, *finer, finer_runs, dyn, set, probes,
+                                options.num_threads);
+    if (space_change <= options.resolution_tolerance) break;
+    n *= 2;
+    model = std::move(finer);
+    probe_runs = std::move(finer_runs);
+  }
+
+  // Time resolution (implicit integrator): halve dt until the probes agree;
+  // again the coarser step is used. The explicit integrator's step is set by
+  // stability and needs no search.
+  double time_change = 0.0;
+  if (dyn.integrator == Integrator::kImplicitTrapezoidal) {
+    for (int iteration = 1;; ++iteration) {
+      DynamicsOptions half = dyn;
+      half.steps_per_period *= 2;
+      half.steps_per_line_period *= 2;
+      if (half.steps_per_period > options.max_steps_per_period) {
+        throw NumericalError("shallow-sag time resolution search: no convergence up to " +
+                             std::to_string(dyn.steps_per_period) + " steps per period (iteration " +
+                             std::to_string(iteration) + ", residual RMS change " +
+                             format_value(time_change) + ")");
+      }
+      std::vector<HarmonicRun> half_runs = run_set(*model, set, probes, half, options.num_threads);
+      time_change = probe_change(*model, probe_runs, dyn, *model, half_runs, half, set, probes,
+                                 options.num_threads);
+      if (time_change <= options.resolution_tolerance) break;
+      dyn = half;
+      probe_runs = std::move(half_runs);
+    }
+  }
+
+  // All runs at the accepted resolution; the probes are reused.
+  std::vector<std::size_t> rest;
+  for (std::size_t i = 0; i < set.size(); ++i) {
+    if (std::find(probes.begin(), probes.end(), i) == probes.end()) rest.push_back(i);
+  }
+  std::vector<HarmonicRun> rest_runs = run_set(*model, set, rest, dyn, options.num_threads);
+  std::vector<HarmonicRun> runs(set.size());
+  for (std::size_t k = 0; k < probes.size(); ++k) runs[probes[k]] = std::move(probe_runs[k]);
+  for (std::size_t k = 0; k < rest.size(); ++k) runs[rest[k]] = std::move(rest_runs[k]);
+
+  std::vector<TensionSample> samples;
+  FitSummary s;
+  s.min_dt_s = std::numeric_limits<double>::infinity();
+  for (const auto& r : runs) {
+    samples.insert(samples.end(), r.samples.begin(), r.samples.end());
+    s.runs_not_periodic += r.periodic ? 0 : 1;
+    s.min_dt_s = std::min(s.min_dt_s, r.min_dt_s);
+    s.max_dt_s = std::max(s.max_dt_s, r.max_dt_s);
+  }
+  const PolynomialFit fit = fit_polynomial(samples, breaking_n - mean_tension_n,
+                                           model->tension_floor_n(), options.slack_fit);
+
+  // EQ-TOWLINE-13: static extension at which H reaches breaking strength.
+  const Catenary at_break = Catenary::solve(towline, points, breaking_n, options.catenary);
+
+  s.mean_tension_n = mean_tension_n;
+  s.breaking_strength_n = breaking_n;
+  s.unstretched_length_m = cat.unstretched_length_m();
+  s.span_m = cat.span_m();
+  s.chord_m = cat.chord_m();
+  s.sag_m = cat.sag_m();
+  s.lowest_elevation_m = cat.lowest_elevation_m();
+  s.tug_angle_rad = cat.tug_angle_rad();
+  s.tow_angle_rad = cat.tow_angle_rad();
+  s.tug_tension_n = cat.tug_tension_n();
+  s.tow_tension_n = cat.tow_tension_n();
+  s.static_stiffness_n_m = cat.static_stiffness_n_m();
+  s.dynamic_static_stiffness_n_m = model->quasi_static_stiffness_n_m();
+  s.straight_spring_n_m = 1.0 / cat.axial_compliance_m_n();
+  s.spring_onset_extension_m = at_break.chord_m() - cat.chord_m();
+  s.slack_limit_n = model->tension_floor_n();
+  s.coefficients = fit.coefficients;
+  s.fit_rms_error_n = fit.rms_error_n;
+  s.fit_max_error_n = fit.max_error_n;
+  s.rms_tension_n = fit.rms_tension_n;
+  s.samples_used = fit.samples_used;
+  s.samples_excluded = fit.samples_excluded;
+  for (const TensionSample& x : samples) {
+    if (x.tau_n > breaking_n - mean_tension_n) continue;
+    s.fit_xi_min_m = std::min(s.fit_xi_min_m, x.xi_m);
+    s.fit_xi_max_m = std::max(s.fit_xi_max_m, x.xi_m);
+    s.fit_xi_dot_max_m_s = std::max(s.fit_xi_dot_max_m_s, std::abs(x.xi_dot_m_s));
+  }
+  s.n_elements = model->n_elements();
+  s.steps_per_period = dyn.integrator == Integrator::kImplicitTrapezoidal ? dyn.steps_per_period : 0;
+  s.steps_per_line_period = dyn.integrator == Integrator::kImplicitTrapezoidal ? dyn.steps_per_line_period : 0;
+  s.space_resolution_change = space_change;
+  s.time_resolution_change = time_change;
+  s.runs = static_cast<int>(runs.size());
+  return std::make_shared<const TowlineFit>(std::move(cat), s, std::move(runs));
+}
+
+namespace {
+
+void append_bits(std::string& key, double x) {
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  key.append(reinterpret_cast<const char*>(&bits), sizeof bits);
+}
+
+std::string cache_key(const model::Towline& towline, const TowPoints& points, double mean_tension_n,
+                      const TowlineFitOptions& o) {
+  std::string key;
+  append_bits(key, static_cast<double>(towline.segments.size()));
+  for (const auto& seg : towline.segments) {
+    const auto& c = seg.component;
+    for (double x : {seg.length_m, c.ea_n, c.hydrodynamic_diameter_m, c.mass_per_length_kg_m,
+                     c.weight_in_water_n_m, c.breaking_strength_n, c.drag_coefficient_normal,
+                     c.added_mass_coefficient}) {
+      append_bits(key, x);
+    }
+  }
+  for (double x : {points.tug_height_m, points.tow_height_m, mean_tension_n, o.catenary.closure_tolerance,
+                   static_cast<double>(o.catenary.max_iterations),
+                   static_cast<double>(o.dynamics.samples_per_period),
+                   static_cast<double>(o.dynamics.ramp_cycles), static_cast<double>(o.dynamics.min_cycles),
+                   static_cast<double>(o.dynamics.max_cycles), o.dynamics.periodicity_tolerance,
+                   o.dynamics.courant_target, o.dynamics.courant_limit, o.excitation.max_amplitude_m,
+                   o.excitation.max_velocity_m_s, static_cast<double>(o.min_elements),
+                   static_cast<double>(o.dynamics.integrator == Integrator::kImplicitTrapezoidal),
+                   static_cast<double>(o.dynamics.steps_per_period),
+                   static_cast<double>(o.dynamics.steps_per_line_period), o.dynamics.newton_tolerance,
+                   static_cast<double>(o.dynamics.newton_max_iterations),
+                   static_cast<double>(o.max_steps_per_period),
+                   static_cast<double>(o.slack_fit == SlackFit::kOneSided),
+                   static_cast<double>(o.max_elements), o.resolution_tolerance}) {
+    append_bits(key, x);
+  }
+  append_bits(key, static_cast<double>(o.excitation.frequencies_rad_s.size()));
+  for (double x : o.excitation.frequencies_rad_s) append_bits(key, x);
+  append_bits(key, static_cast<double>(o.excitation.amplitude_fractions.size()));
+  for (double x : o.excitation.amplitude_fractions) append_bits(key, x);
+  // num_threads is left out: results do not depend on it.
+  return key;
+}
+
+}  // namespace
+
+std::shared_ptr<const TowlineFit> TowlineFitCache::get(const model::Towline& towline,
+                                                       const TowPoints& points, double mean_tension_n,
+                                                       const TowlineFitOptions& options) {
+  const std::string key = cache_key(towline, points, mean_tension_n, options);
+  std::promise<std::shared_ptr<const TowlineFit>> promise;
+  Future future;
+  bool owner = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto it = entries_.find(key);
+    if (it != entries_.end()) {
+      future = it->second;
+    } else {
+      future = promise.get_future().share();
+      entries_.emplace(key, future);
+      ++builds_;
+      owner = true;
+    }
+  }
+  if (owner) {
+    try {
+      promise.set_value(build_towline_fit(towline, points, mean_tension_n, options));
+    } catch (...) {
+      promise.set_exception(std::current_exception());
+    }
+  }
+  return future.get();
+}
+
+std::size_t TowlineFitCache::size() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return entries_.size();
+}
+
+std::size_t TowlineFitCache::builds() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return builds_;
+}
+
+void TowlineFitCache::clear() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  entries_.clear();
+}
+
+TowlineFitCache& global_fit_cache() {
+  static TowlineFitCache cache;
+  return cache;
+}
+
+}  // namespace towdb::towline
