@@ -25,6 +25,8 @@ io::ShipCatalog load_catalog(const Context& ctx);
 
 void add_ships_command(CLI::App& app, Context& ctx);
 void add_simulate_command(CLI::App& app, Context& ctx);
+void add_query_commands(CLI::App& app, Context& ctx);  // query, max-speed, min-length
+void add_export_command(CLI::App& app, Context& ctx);
 
 }  // namespace towdb::cli
 

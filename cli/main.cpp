@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
                  "Directory of vessel files (default: $TOWDB_SHIPS_DIR or the bundled ships/)");
   towdb::cli::add_ships_command(app, ctx);
   towdb::cli::add_simulate_command(app, ctx);
+  towdb::cli::add_query_commands(app, ctx);
+  towdb::cli::add_export_command(app, ctx);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,94 @@
+// Query throughput (Google Benchmark): interpolated queries per second through
+// the C API on one core. Target (issue "Query engine for tow planners"):
+// >= 100,000 queries/s. The database is synthetic, thesis-sized: 4 speeds x
+// 3 winds x 7 headings x 4 lengths x 2-4 mean tensions = 1008 cases, with
+// Gumbel parameters from exp(linear) functions (tests/query/synthetic_db.hpp).
+// The sum of the answers is printed as a counter ("checksum") so that two
+// builds can be compared for identical results (after SQLite's speedtest1).
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <unistd.h>
+
+#include "synthetic_db.hpp"
+#include "towdb/query.h"
+
+namespace {
+
+struct Fixture {
+  std::filesystem::path path;
+  towdb_query_db* db = nullptr;
+  std::vector<towdb_query_request> requests;
+
+  Fixture() {
+    path = std::filesystem::temp_directory_path() / ("towdb-bench-" + std::to_string(::getpid()) + ".towdb");
+    std::filesystem::remove(path);
+    towdb::test::GridSpec g;
+    g.headings_deg = {0.0, 30.0, 60.0, 90.0, 120.0, 150.0, 180.0};
+    g.lengths_ft = {800.0, 1000.0, 1500.0, 2000.0};
+    g.u_kips = [](double s, double w, double h, double l, double m) {
+      return 40.0 * std::exp(0.05 * s + 0.03 * w - 0.0005 * l + 0.002 * h + 5e-6 * m);
+    };
+    g.beta_kips = [](double, double w, double, double, double m) { return 8.0 * std::exp(0.02 * w + 3e-6 * m); };
+    towdb::test::write_synthetic_db(path, towdb::test::grid_cases(g));
+    if (towdb_query_open(path.c_str(), TOWDB_QUERY_SPACE_AUTO, &db) != TOWDB_QUERY_OK) std::abort();
+    std::mt19937 rng(2024);
+    std::uniform_real_distribution<double> us(3.0, 9.0), uw(20.0, 35.0), uh(0.0, 360.0), ul(800.0, 2000.0);
+    for (int i = 0; i < 4096; ++i) {
+      towdb_query_request r;
+      towdb_query_request_init(&r);
+      r.tug = "T-ATF 166";
+      r.tow = "LHA 1";
+      r.line = "wire";
+      r.speed_kt = us(rng);
+      r.wind_kt = uw(rng);
+      r.heading_deg = uh(rng);
+      r.length_ft = ul(rng);
+      r.mean_tension_lbf = 63000.0;  // inside every node's stored mean tensions (60,900 to 66,700 lbf)
+      requests.push_back(r);
+    }
+  }
+  ~Fixture() {
+    towdb_query_close(db);
+    std::filesystem::remove(path);
+  }
+};
+
+Fixture& fixture() {
+  static Fixture f;
+  return f;
+}
+
+void BM_InterpolatedQuery(benchmark::State& state) {
+  Fixture& f = fixture();
+  towdb_query_result res;
+  std::size_t i = 0;
+  double checksum = 0.0;
+  for (auto _ : state) {
+    const int rc = towdb_query_run(f.db, &f.requests[i++ & 4095], &res);
+    if (rc != TOWDB_QUERY_OK) state.SkipWithError(towdb_query_errmsg(f.db));
+    checksum += res.dynamic_tension_kips;
+    benchmark::DoNotOptimize(res);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["checksum"] = checksum / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_InterpolatedQuery);
+
+void BM_OpenDatabase(benchmark::State& state) {
+  Fixture& f = fixture();
+  for (auto _ : state) {
+    towdb_query_db* db = nullptr;
+    if (towdb_query_open(f.path.c_str(), TOWDB_QUERY_SPACE_AUTO, &db) != TOWDB_QUERY_OK) state.SkipWithError("open");
+    towdb_query_close(db);
+  }
+}
+BENCHMARK(BM_OpenDatabase)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,1085 @@
+// Loading, interpolation (EQ-QUERY-6, -7) and leave-one-out (EQ-QUERY-8).
+// Equations and conventions: query/include/towdb/query.h.
+#include "engine.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+#include <tuple>
+#include <utility>
+
+#include "common/constants.hpp"
+#include "store/database.hpp"
+
+namespace towdb::query {
+
+// ---------------------------------------------------------------------------
+// Data held in memory: one Group per (tug, tow, line, sea family).
+
+struct CaseRec {
+  std::int64_t id = 0;
+  double speed_kt = kNaN, wind_kt = kNaN, hs_ft = kNaN, tp_s = kNaN, heading_deg = kNaN;
+  double length_ft = kNaN, mean_lbf = kNaN;
+  int days = 0;
+  double u_kips = kNaN, beta_kips = kNaN, dynamic_999_kips = kNaN;
+};
+
+// One stored mean tension at one grid node (duplicates merged by averaging).
+struct MeanPoint {
+  double mean_lbf = kNaN;
+  double u_kips = 0.0, beta_kips = 0.0;
+  double ln_u = 0.0, ln_beta = 0.0;  // precomputed for log space (NaN when u <= 0)
+  double slack = 0.0, ci_level = 0.0, ci_low_kips = 0.0, ci_high_kips = 0.0;
+  double bs_lbf = 0.0;
+  bool above_bs = false;
+  std::vector<int> cases;  // indices into Group::cases
+};
+
+struct Node {
+  std::array<int, kGridAxes> index{};
+  std::vector<MeanPoint> points;  // ascending mean tension
+};
+
+struct Group {
+  std::string tug, tow, line, family;
+  std::string tug_key, tow_key;  // normalised names (lower case, letters and digits)
+  bool wind_sea = true;
+  std::array<std::vector<double>, kGridAxes> axis;
+  std::array<std::size_t, kGridAxes> stride{};
+  std::vector<int> node_at;  // flat grid index -> node, -1 where no case is stored
+  std::vector<Node> nodes;
+  std::vector<CaseRec> cases;
+
+  int node_index(const std::array<int, kGridAxes>& idx) const {
+    std::size_t flat = 0;
+    for (int a = 0; a < kGridAxes; ++a) flat += static_cast<std::size_t>(idx[a]) * stride[a];
+    return node_at[flat];
+  }
+  std::string name() const { return tug + " / " + tow + " / " + line + (wind_sea ? "" : " / " + family); }
+  std::string describe(const std::array<int, kGridAxes>& idx) const {
+    std::string s = name() + " at speed " + format_value(axis[kSpeed][idx[kSpeed]]) + " kt, " +
+                    (wind_sea ? "wind " : "Hs ") + format_value(axis[kSea][idx[kSea]]) +
+                    (wind_sea ? " kt" : " ft");
+    if (!wind_sea) s += ", Tp " + format_value(axis[kPeriod][idx[kPeriod]]) + " s";
+    return s + ", heading " + format_value(axis[kHeading][idx[kHeading]]) + " deg, length " +
+           format_value(axis[kLength][idx[kLength]]) + " ft";
+  }
+};
+
+namespace {
+
+const char* const kAxisField[kGridAxes] = {"speed_kt", "sea", "tp_s", "heading_deg", "length_ft"};
+const char* const kAxisUnit[kGridAxes] = {"kt", "", "s", "deg", "ft"};
+
+// Two stored coordinates are the same grid value when they agree to this
+// relative precision (values come from sweep files written with few digits).
+constexpr double kSameValueRelTol = 1e-9;
+
+bool same_value(double a, double b) {
+  return std::abs(a - b) <= kSameValueRelTol * std::max({1.0, std::abs(a), std::abs(b)});
+}
+
+double fold_heading_deg(double h) { return h > 180.0 ? 360.0 - h : h; }
+
+std::string normalise_name(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (std::isalnum(static_cast<unsigned char>(c))) out.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+  }
+  return out;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+// Exact normalised match, else a unique normalised prefix; InputError otherwise.
+std::string match_name(const std::string& query, const std::vector<std::string>& known, const std::string& what) {
+  const std::string q = normalise_name(query);
+  std::vector<std::string> prefix;
+  for (const auto& k : known) {
+    const std::string nk = normalise_name(k);
+    if (nk == q) return k;
+    if (!q.empty() && nk.compare(0, q.size(), q) == 0) prefix.push_back(k);
+  }
+  if (prefix.size() == 1) return prefix.front();
+  if (prefix.size() > 1) {
+    throw InputError(what + " '" + query + "' is ambiguous; it matches: " + join(prefix));
+  }
+  throw InputError(what + " '" + query + "' is not in the database; known: " + join(known));
+}
+
+std::vector<double> unique_sorted(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  std::vector<double> out;
+  for (double x : v) {
+    if (out.empty() || !same_value(out.back(), x)) out.push_back(x);
+  }
+  return out;
+}
+
+int find_value(const std::vector<double>& axis, double v) {
+  const auto it = std::lower_bound(axis.begin(), axis.end(), v - kSameValueRelTol * std::max(1.0, std::abs(v)));
+  TOWDB_ASSERT(it != axis.end() && same_value(*it, v));
+  return static_cast<int>(it - axis.begin());
+}
+
+// -ln(-ln(1 - p)): the Gumbel frequency term of EQ-QUERY-3.
+double gumbel_reduced_variate(double probability) { return -std::log(-std::log1p(-probability)); }
+
+// The database's planning probability (schema/README.md: dynamic_999_kips).
+constexpr double kPlanningProbability = 0.001;
+
+double to_space(double v, Space s) { return s == Space::kLog ? std::log(v) : v; }
+double from_space(double g, Space s) { return s == Space::kLog ? std::exp(g) : g; }
+double u_in(const MeanPoint& p, Space s) { return s == Space::kLog ? p.ln_u : p.u_kips; }
+double beta_in(const MeanPoint& p, Space s) { return s == Space::kLog ? p.ln_beta : p.beta_kips; }
+
+// ---------------------------------------------------------------------------
+// EQ-QUERY-6: brackets and evaluation.
+
+struct Bracket {
+  int i0 = 0, i1 = 0;  // i0 == i1: pinned to one stored value (t = 0)
+  double t = 0.0;
+  bool outside = false;
+};
+using Brackets = std::array<Bracket, kGridAxes>;
+
+Bracket make_bracket(const std::vector<double>& axis, double q, bool extrapolate, const std::string& field,
+                     const std::string& unit, const std::string& group) {
+  const int n = static_cast<int>(axis.size());
+  Bracket b;
+  if (q < axis.front() && !same_value(q, axis.front())) {
+    b.outside = true;
+  } else if (q > axis.back() && !same_value(q, axis.back())) {
+    b.outside = true;
+  }
+  if (b.outside) {
+    if (!extrapolate) {
+      throw OutOfRangeError(field + " = " + format_value(q) + " is outside the stored range [" +
+                            format_value(axis.front()) + ", " + format_value(axis.back()) + "]" +
+                            (unit.empty() ? "" : " " + unit) + " of " + group +
+                            "; pass extrapolate (--extrapolate) to extrapolate");
+    }
+    if (n == 1) return b;  // constant: a single stored value
+    const int i0 = q < axis.front() ? 0 : n - 2;
+    b.i0 = i0;
+    b.i1 = i0 + 1;
+    b.t = (q - axis[i0]) / (axis[i0 + 1] - axis[i0]);
+    return b;
+  }
+  for (int i = 0; i < n; ++i) {
+    if (same_value(q, axis[i])) {
+      b.i0 = b.i1 = i;
+      return b;
+    }
+  }
+  const int i1 = static_cast<int>(std::upper_bound(axis.begin(), axis.end(), q) - axis.begin());
+  b.i0 = i1 - 1;
+  b.i1 = i1;
+  b.t = (q - axis[b.i0]) / (axis[b.i1] - axis[b.i0]);
+  return b;
+}
+
+// Parameters of one grid node at a mean tension (piecewise linear in m, in the space).
+// No default member initialisers: a cell holds up to 32 of these, and
+// node_value() value-initialises the one it fills.
+struct NodeValue {
+  double g_u, g_beta;  // in the interpolation space
+  double u, beta;      // kips
+  double slack, ci_level, ci_low, ci_high;
+  double bs_min, bs_max, mean_lbf;
+  bool above_bs, mean_extrapolated;
+  int p0, p1;
+  double t;
+};
+
+NodeValue node_value(const Group& g, const Node& node, double mean_lbf, Space s, bool extrapolate) {
+  const auto& pts = node.points;
+  const int k = static_cast<int>(pts.size());
+  NodeValue v{};
+  if (std::isnan(mean_lbf)) {
+    v.p0 = v.p1 = k - 1;
+  } else {
+    const bool below = mean_lbf < pts.front().mean_lbf && !same_value(mean_lbf, pts.front().mean_lbf);
+    const bool above = mean_lbf > pts.back().mean_lbf && !same_value(mean_lbf, pts.back().mean_lbf);
+    if (below || above) {
+      if (!extrapolate) {
+        std::string stored;
+        for (const auto& p : pts) stored += (stored.empty() ? "" : ", ") + format_value(p.mean_lbf);
+        throw OutOfRangeError("mean_tension_lbf = " + format_value(mean_lbf) +
+                              " is outside the mean tensions stored at " + g.describe(node.index) + " (" +
+                              stored + " lbf); pass extrapolate (--extrapolate) to extrapolate");
+      }
+      v.mean_extrapolated = true;
+      if (k == 1) {
+        v.p0 = v.p1 = 0;
+      } else {
+        v.p0 = below ? 0 : k - 2;
+        v.p1 = v.p0 + 1;
+        v.t = (mean_lbf - pts[v.p0].mean_lbf) / (pts[v.p1].mean_lbf - pts[v.p0].mean_lbf);
+      }
+    } else {
+      int hit = -1;
+      for (int i = 0; i < k; ++i) {
+        if (same_value(mean_lbf, pts[i].mean_lbf)) hit = i;
+      }
+      if (hit >= 0) {
+        v.p0 = v.p1 = hit;
+      } else {
+        int i1 = 1;
+        while (pts[i1].mean_lbf < mean_lbf) ++i1;
+        v.p0 = i1 - 1;
+        v.p1 = i1;
+        v.t = (mean_lbf - pts[v.p0].mean_lbf) / (pts[v.p1].mean_lbf - pts[v.p0].mean_lbf);
+      }
+    }
+  }
+  const MeanPoint& a = pts[v.p0];
+  const MeanPoint& b = pts[v.p1];
+  v.mean_lbf = std::isnan(mean_lbf) ? a.mean_lbf : mean_lbf;
+  v.bs_min = std::min(a.bs_lbf, b.bs_lbf);
+  v.bs_max = std::max(a.bs_lbf, b.bs_lbf);
+  v.above_bs = a.above_bs || b.above_bs;
+  if (v.p0 == v.p1) {
+    v.u = a.u_kips;
+    v.beta = a.beta_kips;
+    v.g_u = u_in(a, s);
+    v.g_beta = beta_in(a, s);
+    v.slack = a.slack;
+    v.ci_level = a.ci_level;
+    v.ci_low = a.ci_low_kips;
+    v.ci_high = a.ci_high_kips;
+    return v;
+  }
+  const double t = v.t;
+  auto lerp = [t](double x0, double x1) { return (1.0 - t) * x0 + t * x1; };
+  v.g_u = lerp(u_in(a, s), u_in(b, s));
+  v.g_beta = lerp(beta_in(a, s), beta_in(b, s));
+  // v.u and v.beta are filled lazily (node_u / node_beta): exp is costly.
+  v.u = v.beta = kNaN;
+  v.slack = lerp(a.slack, b.slack);
+  v.ci_level = a.ci_level;
+  v.ci_low = lerp(a.ci_low_kips, b.ci_low_kips);
+  v.ci_high = lerp(a.ci_high_kips, b.ci_high_kips);
+  return v;
+}
+
+// A node's u and beta in kips (stored values when pinned to one mean tension).
+double node_u(const NodeValue& v, Space s) { return v.p0 == v.p1 ? v.u : from_space(v.g_u, s); }
+double node_beta(const NodeValue& v, Space s) { return v.p0 == v.p1 ? v.beta : from_space(v.g_beta, s); }
+
+// Up to 2^5 corners of a cell.
+constexpr int kMaxCorners = 1 << kGridAxes;
+
+struct Corner {
+  int node;  // -1: missing or zero weight (set for every corner by evaluate)
+  double weight;
+  std::array<int, kGridAxes> idx;
+  NodeValue value;
+};
+
+struct Evaluation {
+  double u = 0.0, beta = 0.0, mean_lbf = 0.0, slack = 0.0;
+  double ci_level = 0.0, ci_low = 0.0, ci_high = 0.0;
+  double bs_min = 0.0, bs_max = 0.0;
+  bool above_bs = false, mean_extrapolated = false;
+  int missing = 0;
+  std::array<int, kGridAxes> active{};
+  int active_count = 0;
+  std::array<Corner, kMaxCorners> corners;  // indexed by the bit mask over active axes
+};
+
+void evaluate(const Group& g, const Brackets& br, double mean_lbf, Space s, bool extrapolate, Evaluation* ev) {
+  ev->active_count = 0;
+  for (int a = 0; a < kGridAxes; ++a) {
+    if (br[a].i0 != br[a].i1) ev->active[ev->active_count++] = a;
+  }
+  const int n_corners = 1 << ev->active_count;
+  double present_weight = 0.0;
+  int present = 0;
+  ev->missing = 0;
+  for (int mask = 0; mask < n_corners; ++mask) {
+    Corner& c = ev->corners[mask];
+    c.node = -1;
+    double w = 1.0;
+    for (int a = 0; a < kGridAxes; ++a) c.idx[a] = br[a].i0;
+    for (int j = 0; j < ev->active_count; ++j) {
+      const int a = ev->active[j];
+      const bool hi = (mask >> j) & 1;
+      c.idx[a] = hi ? br[a].i1 : br[a].i0;
+      w *= hi ? br[a].t : 1.0 - br[a].t;
+    }
+    c.weight = w;
+    if (w == 0.0) continue;
+    const int node = g.node_index(c.idx);
+    if (node < 0) {
+      if (!extrapolate) {
+        throw OutOfRangeError("no stored case at " + g.describe(c.idx) +
+                              " (the case grid is incomplete there); pass extrapolate (--extrapolate) to "
+                              "interpolate from the nodes that exist");
+      }
+      ++ev->missing;
+      continue;
+    }
+    c.node = node;
+    c.value = node_value(g, g.nodes[node], mean_lbf, s, extrapolate);
+    present_weight += w;
+    ++present;
+  }
+  if (present == 0 || !(std::abs(present_weight) > 1e-12)) {
+    throw OutOfRangeError("no stored case surrounds the query in " + g.name());
+  }
+  double gu = 0.0, gb = 0.0;
+  ev->mean_lbf = ev->slack = ev->ci_low = ev->ci_high = 0.0;
+  ev->bs_min = std::numeric_limits<double>::infinity();
+  ev->bs_max = 0.0;
+  ev->above_bs = ev->mean_extrapolated = false;
+  const Corner* single = nullptr;
+  for (int mask = 0; mask < n_corners; ++mask) {
+    Corner& c = ev->corners[mask];
+    if (c.node < 0) continue;
+    c.weight /= present_weight;  // renormalised when corners are missing (extrapolate only)
+    const NodeValue& v = c.value;
+    gu += c.weight * v.g_u;
+    gb += c.weight * v.g_beta;
+    ev->mean_lbf += c.weight * v.mean_lbf;
+    ev->slack += c.weight * v.slack;
+    ev->ci_low += c.weight * v.ci_low;
+    ev->ci_high += c.weight * v.ci_high;
+    ev->ci_level = v.ci_level;
+    ev->bs_min = std::min(ev->bs_min, v.bs_min);
+    ev->bs_max = std::max(ev->bs_max, v.bs_max);
+    ev->above_bs = ev->above_bs || v.above_bs;
+    ev->mean_extrapolated = ev->mean_extrapolated || v.mean_extrapolated;
+    single = &c;
+  }
+  if (present == 1 && single->weight == 1.0) {
+    // At a stored node: the stored values, bit for bit (no log/exp round trip).
+    ev->u = node_u(single->value, s);
+    ev->beta = node_beta(single->value, s);
+    ev->mean_lbf = single->value.mean_lbf;
+  } else {
+    ev->u = from_space(gu, s);
+    ev->beta = from_space(gb, s);
+  }
+  if (!(std::isfinite(ev->u) && std::isfinite(ev->beta) && ev->beta > 0.0)) {
+    throw NumericalError("interpolation in " + g.name() + " gives Gumbel u = " + format_value(ev->u) +
+                         " kips, beta = 1/alpha = " + format_value(ev->beta) +
+                         " kips: not a distribution (scale must be > 0); extrapolated too far");
+  }
+}
+
+double percentile(const std::vector<double>& sorted, double q) {
+  if (sorted.empty()) return kNaN;
+  const double pos = q * static_cast<double>(sorted.size() - 1);
+  const auto i = static_cast<std::size_t>(std::floor(pos));
+  const double f = pos - static_cast<double>(i);
+  if (i + 1 >= sorted.size()) return sorted.back();
+  return sorted[i] + f * (sorted[i + 1] - sorted[i]);
+}
+
+// Second divided difference f[x0, x1, x2] (EQ-QUERY-7: f''/2 for a quadratic).
+double divided_difference2(double x0, double f0, double x1, double f1, double x2, double f2) {
+  const double d01 = (f1 - f0) / (x1 - x0);
+  const double d12 = (f2 - f1) / (x2 - x1);
+  return (d12 - d01) / (x2 - x0);
+}
+
+// EQ-QUERY-7: ratio of the MoM quantile standard error at frequency factor K.
+double quantile_se_factor(double reduced_variate_plus_ln_days) {
+  const double k = std::numbers::sqrt3 * std::numbers::sqrt2 / kPi * (reduced_variate_plus_ln_days - kEulerGamma);
+  return std::sqrt(std::max(0.0, 1.0 + 1.1396 * k + 1.1 * k * k));
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+
+double gumbel_quantile_kips(double u_kips, double beta_kips, double probability, double tow_days) {
+  return u_kips + beta_kips * (std::log(tow_days) + gumbel_reduced_variate(probability));
+}
+
+void QueryOptions::validate() const {
+  require_positive("high_tension_warning_kips", high_tension_warning_kips);
+  require_in_range("slack_warning_fraction", slack_warning_fraction, 0.0, 1.0);
+  require_input(std::isfinite(extreme_safety_factor) && extreme_safety_factor >= 1.0, "extreme_safety_factor",
+                extreme_safety_factor, "must be a finite number >= 1");
+  require_input(std::isfinite(mean_safety_factor_machine) && mean_safety_factor_machine >= 1.0,
+                "mean_safety_factor_machine", mean_safety_factor_machine, "must be a finite number >= 1");
+  require_input(std::isfinite(mean_safety_factor_brake) && mean_safety_factor_brake >= 1.0,
+                "mean_safety_factor_brake", mean_safety_factor_brake, "must be a finite number >= 1");
+  require_in_range("nearest_cases", nearest_cases, 0, 64);
+}
+
+void Request::validate() const {
+  if (tug.empty()) throw InputError("tug: a tug name is required");
+  if (tow.empty()) throw InputError("tow: a tow name is required");
+  if (line != "wire" && line != "fiber") {
+    throw InputError("line = '" + line + "': must be 'wire' or 'fiber'");
+  }
+  require_positive("speed_kt", speed_kt);
+  const bool has_wind = !std::isnan(wind_kt), has_hs = !std::isnan(hs_ft);
+  if (has_wind == has_hs) {
+    throw InputError(has_wind ? "wind_kt and hs_ft: give one sea, not both"
+                              : "wind_kt: a sea is required (wind_kt, or hs_ft for a two-parameter sea)");
+  }
+  if (has_wind) require_positive("wind_kt", wind_kt);
+  if (has_hs) require_positive("hs_ft", hs_ft);
+  if (!std::isnan(tp_s)) require_positive("tp_s", tp_s);
+  require_in_range("heading_deg", heading_deg, 0.0, 360.0);
+  require_positive("length_ft", length_ft);
+  if (!std::isnan(mean_tension_lbf)) require_positive("mean_tension_lbf", mean_tension_lbf);
+  require_input(std::isfinite(probability) && probability > 0.0 && probability < 1.0, "probability", probability,
+                "must be strictly between 0 and 1 (exceedance probability of the tow's maximum)");
+  require_input(std::isfinite(tow_days) && tow_days >= 1.0, "tow_days", tow_days,
+                "must be a finite number of days >= 1");
+}
+
+// ---------------------------------------------------------------------------
+// Loading.
+
+Engine::Engine(Engine&&) noexcept = default;
+Engine& Engine::operator=(Engine&&) noexcept = default;
+Engine::~Engine() = default;
+
+Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions options) {
+  options.validate();
+  Engine e;
+  e.options_ = options;
+  std::map<std::tuple<std::string, std::string, std::string, std::string>, std::size_t> group_of;
+  struct Row {
+    CaseRec rec;
+    double folded_heading = 0.0, slack = 0.0, ci_level = 0.0, ci_low = 0.0, ci_high = 0.0, bs = 0.0;
+    bool above = false;
+  };
+  std::vector<std::vector<Row>> rows;
+  try {
+    store::Database db = store::Database::open(path, store::Database::Mode::kReadOnly);
+    store::Statement st = db.prepare(
+        "SELECT c.case_id, c.tug_name, c.tow_name, c.line_type, c.speed_kt, c.spectrum, c.wind_kt, c.hs_ft, "
+        "c.tp_s, c.gamma, c.swell_hs_ft, c.heading_deg, c.length_ft, c.mean_tension_lbf, c.days, "
+        "r.gumbel_u_kips, r.gumbel_alpha_per_kip, r.dynamic_999_kips, r.ci_level, r.ci_low_kips, r.ci_high_kips, "
+        "r.breaking_strength_lbf, r.above_breaking_strength, r.slack_fraction "
+        "FROM cases c JOIN results r ON r.case_id = c.case_id WHERE c.status = 'done' ORDER BY c.case_id");
+    while (st.step()) {
+      Row r;
+      r.rec.id = st.column_int(0);
+      const std::string tug = st.column_text(1), tow = st.column_text(2), line = st.column_text(3);
+      r.rec.speed_kt = st.column_double(4);
+      std::string family = st.column_text(5);
+      const auto wind = st.column_optional_double(6), hs = st.column_optional_double(7);
+      const auto tp = st.column_optional_double(8), gamma = st.column_optional_double(9);
+      if (!st.is_null(10) || family.find("+swell") != std::string::npos) continue;  // swell seas: not gridded
+      if (wind.has_value() == hs.has_value()) continue;                             // not one sea parameter
+      r.rec.wind_kt = wind.value_or(kNaN);
+      r.rec.hs_ft = hs.value_or(kNaN);
+      r.rec.tp_s = hs ? tp.value_or(0.0) : kNaN;
+      if (gamma) family += "(gamma=" + format_value(*gamma) + ")";
+      r.rec.heading_deg = st.column_double(11);
+      r.folded_heading = fold_heading_deg(r.rec.heading_deg);
+      r.rec.length_ft = st.column_double(12);
+      r.rec.mean_lbf = st.column_double(13);
+      r.rec.days = static_cast<int>(st.column_int(14));
+      r.rec.u_kips = st.column_double(15);
+      const double alpha = st.column_double(16);
+      r.rec.dynamic_999_kips = st.column_double(17);
+      r.ci_level = st.column_double(18);
+      r.ci_low = st.column_double(19);
+      r.ci_high = st.column_double(20);
+      r.bs = st.column_double(21);
+      r.above = st.column_int(22) != 0;
+      r.slack = st.column_double(23);
+      if (!(std::isfinite(alpha) && alpha > 0.0 && std::isfinite(r.rec.u_kips) && std::isfinite(r.bs) && r.bs > 0.0 &&
+            std::isfinite(r.rec.speed_kt) && std::isfinite(r.rec.length_ft) && std::isfinite(r.rec.mean_lbf))) {
+        throw DatabaseError(path.string() + ": case " + std::to_string(r.rec.id) +
+                            " has an invalid result (gumbel_alpha_per_kip = " + format_value(alpha) +
+                            ", gumbel_u_kips = " + format_value(r.rec.u_kips) + ", breaking_strength_lbf = " +
+                            format_value(r.bs) + "): alpha and breaking strength must be finite and > 0");
+      }
+      r.rec.beta_kips = 1.0 / alpha;
+      const auto key = std::make_tuple(tug, tow, line, (wind ? "wind:" : "hs:") + family);
+      auto [it, inserted] = group_of.try_emplace(key, e.groups_.size());
+      if (inserted) {
+        Group g;
+        g.tug = tug;
+        g.tow = tow;
+        g.line = line;
+        g.family = family;
+        g.wind_sea = wind.has_value();
+        g.tug_key = normalise_name(tug);
+        g.tow_key = normalise_name(tow);
+        e.groups_.push_back(std::move(g));
+        rows.emplace_back();
+      }
+      rows[it->second].push_back(r);
+    }
+  } catch (const DatabaseError&) {
+    throw;
+  } catch (const InputError& err) {
+    throw DatabaseError(err.what());
+  } catch (const StorageError& err) {
+    throw DatabaseError(err.what());
+  }
+  if (e.groups_.empty()) {
+    throw DatabaseError(path.string() + ": no finished cases (cases.status = 'done' with a results row) to query");
+  }
+
+  e.log_ok_ = true;
+  for (std::size_t gi = 0; gi < e.groups_.size(); ++gi) {
+    Group& g = e.groups_[gi];
+    const auto& rs = rows[gi];
+    std::array<std::vector<double>, kGridAxes> raw;
+    for (const Row& r : rs) {
+      raw[kSpeed].push_back(r.rec.speed_kt);
+      raw[kSea].push_back(g.wind_sea ? r.rec.wind_kt : r.rec.hs_ft);
+      raw[kPeriod].push_back(g.wind_sea ? 0.0 : r.rec.tp_s);
+      raw[kHeading].push_back(r.folded_heading);
+      raw[kLength].push_back(r.rec.length_ft);
+    }
+    std::size_t total = 1;
+    for (int a = kGridAxes - 1; a >= 0; --a) {
+      g.axis[a] = unique_sorted(raw[a]);
+      g.stride[a] = total;
+      total *= g.axis[a].size();
+    }
+    g.node_at.assign(total, -1);
+    for (const Row& r : rs) {
+      std::array<int, kGridAxes> idx{};
+      idx[kSpeed] = find_value(g.axis[kSpeed], r.rec.speed_kt);
+      idx[kSea] = find_value(g.axis[kSea], g.wind_sea ? r.rec.wind_kt : r.rec.hs_ft);
+      idx[kPeriod] = find_value(g.axis[kPeriod], g.wind_sea ? 0.0 : r.rec.tp_s);
+      idx[kHeading] = find_value(g.axis[kHeading], r.folded_heading);
+      idx[kLength] = find_value(g.axis[kLength], r.rec.length_ft);
+      int node = g.node_index(idx);
+      if (node < 0) {
+        node = static_cast<int>(g.nodes.size());
+        std::size_t flat = 0;
+        for (int a = 0; a < kGridAxes; ++a) flat += static_cast<std::size_t>(idx[a]) * g.stride[a];
+        g.node_at[flat] = node;
+        g.nodes.push_back(Node{idx, {}});
+      }
+      const int case_index = static_cast<int>(g.cases.size());
+      g.cases.push_back(r.rec);
+      auto& pts = g.nodes[node].points;
+      auto same = std::find_if(pts.begin(), pts.end(), [&](const MeanPoint& p) { return same_value(p.mean_lbf, r.rec.mean_lbf); });
+      if (same == pts.end()) {
+        MeanPoint p;
+        p.mean_lbf = r.rec.mean_lbf;
+        pts.push_back(p);
+        same = pts.end() - 1;
+      }
+      same->cases.push_back(case_index);
+    }
+    // Merge duplicates (e.g. headings h and 360 - h): average of the parameters.
+    for (Node& node : g.nodes) {
+      for (MeanPoint& p : node.points) {
+        const double n = static_cast<double>(p.cases.size());
+        double u = 0, beta = 0, slack = 0, lo = 0, hi = 0, level = 0, bs = std::numeric_limits<double>::infinity();
+        bool above = false;
+        for (int ci : p.cases) {
+          const CaseRec& c = g.cases[ci];
+          u += c.u_kips;
+          beta += c.beta_kips;
+          // Per-case extras live in the Row list in the same order as g.cases.
+          const Row& r = rs[ci];
+          slack += r.slack;
+          lo += r.ci_low;
+          hi += r.ci_high;
+          level = r.ci_level;
+          bs = std::min(bs, r.bs);
+          above = above || r.above;
+        }
+        if (p.cases.size() == 1) {
+          p.u_kips = u;
+          p.beta_kips = beta;
+        } else {
+          p.u_kips = u / n;
+          p.beta_kips = beta / n;
+        }
+        p.slack = slack / n;
+        p.ci_low_kips = lo / n;
+        p.ci_high_kips = hi / n;
+        p.ci_level = level;
+        p.bs_lbf = bs;
+        p.above_bs = above;
+        if (!(p.u_kips > 0.0)) e.log_ok_ = false;
+        p.ln_u = std::log(p.u_kips);
+        p.ln_beta = std::log(p.beta_kips);
+      }
+      std::sort(node.points.begin(), node.points.end(),
+                [](const MeanPoint& a, const MeanPoint& b) { return a.mean_lbf < b.mean_lbf; });
+    }
+    e.case_count_ += static_cast<int>(g.cases.size());
+  }
+
+  // EQ-QUERY-6: the space is chosen by the leave-one-out test (EQ-QUERY-8).
+  if (space == Space::kLog && !e.log_ok_) {
+    throw InputError("space = log: some stored gumbel_u_kips <= 0, so log-space interpolation is impossible; use "
+                     "linear or auto");
+  }
+  if (space == Space::kAuto) {
+    e.space_ = Space::kLinear;
+    if (e.log_ok_) {
+      const LooStats lin = e.leave_one_out(Space::kLinear, kAllAxes);
+      const LooStats lg = e.leave_one_out(Space::kLog, kAllAxes);
+      if (lin.samples > 0 && lg.median_rel_error < lin.median_rel_error) e.space_ = Space::kLog;
+    }
+  } else {
+    e.space_ = space;
+  }
+  return e;
+}
+
+const Group& Engine::find_group(const Request& r) const {
+  // Fast path (no allocation beyond two short keys): exact normalised names
+  // and a unique group; the lists and messages are built only when needed.
+  const std::string tug_key = normalise_name(r.tug), tow_key = normalise_name(r.tow);
+  const bool wind_sea = !std::isnan(r.wind_kt);
+  const Group* hit = nullptr;
+  int hits = 0;
+  for (const Group& g : groups_) {
+    if (g.tug_key == tug_key && g.tow_key == tow_key && g.line == r.line && g.wind_sea == wind_sea &&
+        r.spectrum.empty()) {
+      hit = &g;
+      ++hits;
+    }
+  }
+  if (hits == 1) return *hit;
+
+  std::vector<std::string> tugs;
+  for (const Group& g : groups_) {
+    if (std::find(tugs.begin(), tugs.end(), g.tug) == tugs.end()) tugs.push_back(g.tug);
+  }
+  std::sort(tugs.begin(), tugs.end());
+  const std::string tug = match_name(r.tug, tugs, "tug");
+  std::vector<std::string> tows;
+  for (const Group& g : groups_) {
+    if (g.tug == tug && std::find(tows.begin(), tows.end(), g.tow) == tows.end()) tows.push_back(g.tow);
+  }
+  std::sort(tows.begin(), tows.end());
+  const std::string tow = match_name(r.tow, tows, "tow (towed by " + tug + ")");
+  std::vector<const Group*> found;
+  std::set<std::string> lines, seas;
+  for (const Group& g : groups_) {
+    if (g.tug != tug || g.tow != tow) continue;
+    lines.insert(g.line);
+    if (g.line != r.line) continue;
+    seas.insert(g.wind_sea ? "wind (" + g.family + ")" : "hs (" + g.family + ")");
+    if (g.wind_sea != wind_sea) continue;
+    if (!r.spectrum.empty() && normalise_name(g.family).rfind(normalise_name(r.spectrum), 0) != 0) continue;
+    found.push_back(&g);
+  }
+  if (!lines.count(r.line)) {
+    throw InputError("line = '" + r.line + "': no " + r.line + " towline cases for " + tug + " towing " + tow +
+                     "; stored: " + join({lines.begin(), lines.end()}));
+  }
+  if (found.empty()) {
+    throw InputError(std::string(wind_sea ? "wind_kt" : "hs_ft") + ": no " +
+                     (wind_sea ? "wind-defined (Pierson-Moskowitz)" : "Hs-defined") + " seas" +
+                     (r.spectrum.empty() ? "" : " with spectrum '" + r.spectrum + "'") + " for " + tug + " / " + tow +
+                     " / " + r.line + "; stored seas: " + join({seas.begin(), seas.end()}));
+  }
+  if (found.size() > 1) {
+    std::vector<std::string> fams;
+    for (const Group* g : found) fams.push_back(g->family);
+    throw InputError("spectrum: several sea spectra are stored for " + tug + " / " + tow + " / " + r.line +
+                     " (" + join(fams) + "); name one");
+  }
+  return *found.front();
+}
+
+// ---------------------------------------------------------------------------
+// The query (EQ-QUERY-3 .. EQ-QUERY-7).
+
+Answer Engine::query(const Request& r) const {
+  r.validate();
+  const Group& g = find_group(r);
+  const Space s = space_;
+  const bool ex = r.extrapolate;
+
+  std::array<double, kGridAxes> q{};
+  q[kSpeed] = r.speed_kt;
+  q[kSea] = g.wind_sea ? r.wind_kt : r.hs_ft;
+  q[kHeading] = fold_heading_deg(r.heading_deg);
+  q[kLength] = r.length_ft;
+  if (g.wind_sea) {
+    q[kPeriod] = 0.0;
+  } else if (std::isnan(r.tp_s)) {
+    if (g.axis[kPeriod].size() > 1) {
+      throw InputError("tp_s: a peak period is required; " + g.name() + " stores " +
+                       std::to_string(g.axis[kPeriod].size()) + " periods from " +
+                       format_value(g.axis[kPeriod].front()) + " to " + format_value(g.axis[kPeriod].back()) + " s");
+    }
+    q[kPeriod] = g.axis[kPeriod].front();
+  } else {
+    q[kPeriod] = r.tp_s;
+  }
+  Brackets br;
+  for (int a = 0; a < kGridAxes; ++a) {
+    const std::string field = a == kSea ? (g.wind_sea ? "wind_kt" : "hs_ft") : kAxisField[a];
+    const std::string unit = a == kSea ? (g.wind_sea ? "kt" : "ft") : kAxisUnit[a];
+    br[a] = make_bracket(g.axis[a], q[a], ex, field, unit, g.name());
+  }
+
+  Evaluation ev;
+  evaluate(g, br, r.mean_tension_lbf, s, ex, &ev);
+
+  const double c = std::log(r.tow_days) + gumbel_reduced_variate(r.probability);
+  const double c999 = gumbel_reduced_variate(kPlanningProbability);
+  Answer ans;
+  ans.space = s;
+  ans.gumbel_u_kips = ev.u;
+  ans.gumbel_alpha_per_kip = 1.0 / ev.beta;
+  ans.dynamic_tension_kips = ev.u + ev.beta * c;
+  ans.dynamic_999_kips = ev.u + ev.beta * c999;
+  // The query's own mean tension when given (the weighted sum only rounds it).
+  ans.mean_tension_lbf = std::isnan(r.mean_tension_lbf) ? ev.mean_lbf : r.mean_tension_lbf;
+  ans.extreme_tension_lbf = ans.mean_tension_lbf + ans.dynamic_tension_kips * 1000.0;
+  ans.breaking_strength_lbf = ev.bs_min;
+  ans.extreme_limit_lbf = ev.bs_min / options_.extreme_safety_factor;
+  ans.mean_limit_lbf =
+      ev.bs_min / (r.on_brake ? options_.mean_safety_factor_brake : options_.mean_safety_factor_machine);
+  ans.extreme_check_passed = ans.extreme_tension_lbf <= ans.extreme_limit_lbf;
+  ans.mean_check_passed = ans.mean_tension_lbf <= ans.mean_limit_lbf;
+  ans.slack_fraction = ev.slack;
+  ans.ci_level = ev.ci_level;
+  ans.ci_low_kips = ev.ci_low;
+  ans.ci_high_kips = ev.ci_high;
+
+  // EQ-QUERY-7: interpolation error from the second divided differences. In
+  // log space the curvature is that of ln x, and dx = x d(ln x).
+  auto x_at = [&](const NodeValue& v) { return node_u(v, s) + node_beta(v, s) * c; };
+  const bool log_space = s == Space::kLog && ans.dynamic_tension_kips > 0.0;
+  auto g_of = [&](double x) { return log_space ? std::log(x) : x; };
+  const double scale = log_space ? ans.dynamic_tension_kips : 1.0;
+  double err = 0.0;
+  for (int j = 0; j < ev.active_count; ++j) {
+    const int a = ev.active[j];
+    const auto& ax = g.axis[a];
+    const int i0 = br[a].i0, i1 = br[a].i1, n = static_cast<int>(ax.size());
+    const int k = i0 - 1 >= 0 ? i0 - 1 : (i1 + 1 < n ? i1 + 1 : -1);
+    if (k < 0) continue;  // two stored values only: no curvature information on this axis
+    double f[3];
+    const int at[3] = {k, i0, i1};
+    bool ok = true;
+    for (int m = 0; m < 3 && ok; ++m) {
+      Brackets pinned = br;
+      pinned[a] = Bracket{at[m], at[m], 0.0, false};
+      Evaluation e2;
+      try {
+        evaluate(g, pinned, r.mean_tension_lbf, s, ex, &e2);
+        f[m] = g_of(e2.u + e2.beta * c);
+      } catch (const InputError&) {
+        ok = false;
+      } catch (const NumericalError&) {
+        ok = false;
+      }
+    }
+    if (!ok) continue;
+    const double h = ax[i1] - ax[i0];
+    const double t = br[a].t;
+    const double e_axis = scale * std::abs(t * (1.0 - t)) * h * h *
+                          std::abs(divided_difference2(ax[k], f[0], ax[i0], f[1], ax[i1], f[2]));
+    if (std::isfinite(e_axis)) err += e_axis;  // not finite: ln of a non-positive corner value
+  }
+  const int n_corners = 1 << ev.active_count;
+  for (int mask = 0; mask < n_corners; ++mask) {
+    const Corner& cn = ev.corners[mask];
+    if (cn.node < 0 || cn.value.p0 == cn.value.p1) continue;
+    const auto& pts = g.nodes[cn.node].points;
+    const int p0 = cn.value.p0, p1 = cn.value.p1, n = static_cast<int>(pts.size());
+    const int k = p0 - 1 >= 0 ? p0 - 1 : (p1 + 1 < n ? p1 + 1 : -1);
+    if (k < 0) continue;
+    auto xp = [&](int i) { return g_of(pts[i].u_kips + pts[i].beta_kips * c); };
+    const double h = pts[p1].mean_lbf - pts[p0].mean_lbf;
+    const double t = cn.value.t;
+    const double e_mean =
+        scale * std::abs(cn.weight) * std::abs(t * (1.0 - t)) * h * h *
+        std::abs(divided_difference2(pts[k].mean_lbf, xp(k), pts[p0].mean_lbf, xp(p0), pts[p1].mean_lbf, xp(p1)));
+    if (std::isfinite(e_mean)) err += e_mean;
+  }
+  ans.interpolation_error_kips = err;
+  const double ci_half = 0.5 * (ev.ci_high - ev.ci_low) * quantile_se_factor(c) / quantile_se_factor(c999);
+  ans.uncertainty_kips = std::hypot(err, ci_half);
+
+  // Warnings.
+  auto warn = [&](WarningKind kind, std::string msg) { ans.warnings.push_back({kind, std::move(msg)}); };
+  for (int a = 0; a < kGridAxes; ++a) {
+    if (!br[a].outside) continue;
+    ans.extrapolated = true;
+    const std::string field = a == kSea ? (g.wind_sea ? "wind_kt" : "hs_ft") : kAxisField[a];
+    warn(WarningKind::kExtrapolated,
+         field + " = " + format_value(q[a]) + " is outside the stored range [" + format_value(g.axis[a].front()) +
+             ", " + format_value(g.axis[a].back()) + "] of " + g.name() + ": " +
+             (g.axis[a].size() == 1 ? "held at the one stored value" : "extrapolated linearly from the end cell"));
+  }
+  if (ev.mean_extrapolated) {
+    ans.extrapolated = true;
+    warn(WarningKind::kExtrapolated, "mean_tension_lbf = " + format_value(r.mean_tension_lbf) +
+                                         " is outside the mean tensions stored at some grid nodes: extrapolated "
+                                         "linearly from each node's two nearest mean tensions");
+  }
+  if (ev.missing > 0) {
+    ans.extrapolated = true;
+    warn(WarningKind::kIncompleteGrid, std::to_string(ev.missing) + " of " + std::to_string(n_corners) +
+                                           " grid nodes around the query are not stored; the answer uses the others "
+                                           "(weights renormalised)");
+  }
+  if (ans.extreme_tension_lbf > ans.breaking_strength_lbf || ev.above_bs) {
+    warn(WarningKind::kAboveBreaking,
+         "extreme tension " + format_value(std::round(ans.extreme_tension_lbf)) + " lbf" +
+             (ans.extreme_tension_lbf > ans.breaking_strength_lbf ? " exceeds" : " is near cases above") +
+             " the towline breaking strength " + format_value(ans.breaking_strength_lbf) +
+             " lbf: the polynomial towline model is not valid above breaking strength (thesis 6.1); the dynamic "
+             "tension is of unknown accuracy there");
+  }
+  if (ans.dynamic_tension_kips > options_.high_tension_warning_kips) {
+    warn(WarningKind::kHighTension, "dynamic tension " + format_value(std::round(ans.dynamic_tension_kips * 10) / 10) +
+                                        " kips is above " + format_value(options_.high_tension_warning_kips) +
+                                        " kips, outside the bounds of the towline simulation model (thesis 6.2)");
+  }
+  if (ans.slack_fraction > options_.slack_warning_fraction) {
+    warn(WarningKind::kSlack, "slack-prone: the towline is slack " + format_value(std::round(ans.slack_fraction * 1e4) / 100) +
+                                  " % of the time in the stored cases; snatch loads make the Type I fit "
+                                  "underestimate the peak tension (thesis 4.2, YRBM in trailing seas)");
+  }
+  if (ev.bs_max > ev.bs_min * (1.0 + kSameValueRelTol)) {
+    warn(WarningKind::kBreakingDiffers, "the cases around the query store different breaking strengths (" +
+                                            format_value(ev.bs_min) + " to " + format_value(ev.bs_max) +
+                                            " lbf); the smallest is used");
+  }
+  // Monotonicity: more wind (or a higher sea) never lowers the dynamic tension
+  // (thesis 6.3.1); a longer towline never raises it (thesis 6.3.3).
+  for (int j = 0; j < ev.active_count; ++j) {
+    const int a = ev.active[j];
+    if (a != kSea && a != kLength) continue;
+    for (int mask = 0; mask < n_corners; ++mask) {
+      if ((mask >> j) & 1) continue;
+      const Corner& lo = ev.corners[mask];
+      const Corner& hi = ev.corners[mask | (1 << j)];
+      if (lo.node < 0 || hi.node < 0) continue;
+      const double xl = x_at(lo.value), xh = x_at(hi.value);
+      const bool bad = a == kSea ? xh < xl : xh > xl;
+      if (!bad) continue;
+      const std::string what = a == kSea ? (g.wind_sea ? "more wind" : "a higher sea") : "a longer towline";
+      const std::string field = a == kSea ? (g.wind_sea ? "wind_kt" : "hs_ft") : "length_ft";
+      warn(WarningKind::kNotMonotone,
+           "the stored data are not monotone: " + what + " " + (a == kSea ? "lowers" : "raises") +
+               " the dynamic tension between " + field + " = " + format_value(g.axis[a][br[a].i0]) + " and " +
+               format_value(g.axis[a][br[a].i1]) + " (" + format_value(xl) + " -> " + format_value(xh) +
+               " kips) at " + g.describe(lo.idx) + ", against the physics (thesis 6.3); check these cases");
+      break;
+    }
+  }
+
+  // Nearest stored cases: those of the cell's corner nodes.
+  if (options_.nearest_cases > 0) {
+    std::vector<NearCase> cand;
+    for (int mask = 0; mask < n_corners; ++mask) {
+      std::array<int, kGridAxes> idx{};
+      for (int a = 0; a < kGridAxes; ++a) idx[a] = br[a].i0;
+      for (int j = 0; j < ev.active_count; ++j) {
+        if ((mask >> j) & 1) idx[ev.active[j]] = br[ev.active[j]].i1;
+      }
+      const int node = g.node_index(idx);
+      if (node < 0) continue;
+      for (const MeanPoint& p : g.nodes[node].points) {
+        for (int ci : p.cases) {
+          const CaseRec& cr = g.cases[ci];
+          NearCase nc;
+          nc.case_id = cr.id;
+          nc.speed_kt = cr.speed_kt;
+          nc.wind_kt = cr.wind_kt;
+          nc.hs_ft = cr.hs_ft;
+          nc.tp_s = g.wind_sea ? kNaN : cr.tp_s;
+          nc.heading_deg = cr.heading_deg;
+          nc.length_ft = cr.length_ft;
+          nc.mean_tension_lbf = cr.mean_lbf;
+          nc.days = cr.days;
+          nc.dynamic_999_kips = cr.dynamic_999_kips;
+          nc.dynamic_tension_kips = cr.u_kips + cr.beta_kips * c;
+          double d2 = 0.0;
+          for (int j = 0; j < ev.active_count; ++j) {
+            const int a = ev.active[j];
+            const double h = g.axis[a][br[a].i1] - g.axis[a][br[a].i0];
+            const double dq = (q[a] - g.axis[a][idx[a]]) / h;
+            d2 += dq * dq;
+          }
+          const double dm = (ev.mean_lbf - cr.mean_lbf) / ev.mean_lbf;
+          nc.distance = std::sqrt(d2 + dm * dm);
+          cand.push_back(nc);
+        }
+      }
+    }
+    const std::size_t keep = std::min(cand.size(), static_cast<std::size_t>(options_.nearest_cases));
+    std::partial_sort(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(keep), cand.end(),
+                      [](const NearCase& a, const NearCase& b) {
+                        return a.distance != b.distance ? a.distance < b.distance : a.case_id < b.case_id;
+                      });
+    cand.resize(keep);
+    ans.nearest = std::move(cand);
+  }
+  return ans;
+}
+
+// ---------------------------------------------------------------------------
+// EQ-QUERY-8: leave-one-out.
+
+LooStats Engine::leave_one_out(Space s, int axis) const {
+  if (s == Space::kAuto) throw InputError("space = auto: a leave-one-out report needs linear or log");
+  if (s == Space::kLog && !log_ok_) {
+    throw InputError("space = log: some stored gumbel_u_kips <= 0, so log-space interpolation is impossible");
+  }
+  if (axis < kAllAxes || axis > kMeanTensionAxis) {
+    throw InputError("axis = " + std::to_string(axis) + ": must be -1 (all) or 0..5");
+  }
+  const double c999 = gumbel_reduced_variate(kPlanningProbability);
+  std::vector<double> rel, abs_err;
+  auto record = [&](double pred, double truth) {
+    if (!(std::abs(truth) > 0.0)) return;
+    rel.push_back(std::abs(pred - truth) / std::abs(truth));
+    abs_err.push_back(std::abs(pred - truth));
+  };
+  for (const Group& g : groups_) {
+    for (const Node& node : g.nodes) {
+      for (int a = 0; a < kGridAxes; ++a) {
+        if (axis != kAllAxes && axis != a) continue;
+        const int i = node.index[a], n = static_cast<int>(g.axis[a].size());
+        if (i - 1 < 0 || i + 1 >= n) continue;
+        auto left_idx = node.index, right_idx = node.index;
+        left_idx[a] = i - 1;
+        right_idx[a] = i + 1;
+        const int l = g.node_index(left_idx), rt = g.node_index(right_idx);
+        if (l < 0 || rt < 0) continue;
+        const double t = (g.axis[a][i] - g.axis[a][i - 1]) / (g.axis[a][i + 1] - g.axis[a][i - 1]);
+        for (const MeanPoint& p : node.points) {
+          NodeValue vl, vr;
+          try {
+            vl = node_value(g, g.nodes[l], p.mean_lbf, s, false);
+            vr = node_value(g, g.nodes[rt], p.mean_lbf, s, false);
+          } catch (const OutOfRangeError&) {
+            continue;  // the neighbours do not bracket this mean tension
+          }
+          const double u = from_space((1.0 - t) * vl.g_u + t * vr.g_u, s);
+          const double beta = from_space((1.0 - t) * vl.g_beta + t * vr.g_beta, s);
+          record(u + beta * c999, p.u_kips + p.beta_kips * c999);
+        }
+      }
+      if (axis == kAllAxes || axis == kMeanTensionAxis) {
+        const auto& pts = node.points;
+        for (std::size_t k = 1; k + 1 < pts.size(); ++k) {
+          const double t = (pts[k].mean_lbf - pts[k - 1].mean_lbf) / (pts[k + 1].mean_lbf - pts[k - 1].mean_lbf);
+          const double u = from_space(
+              (1.0 - t) * to_space(pts[k - 1].u_kips, s) + t * to_space(pts[k + 1].u_kips, s), s);
+          const double beta = from_space(
+              (1.0 - t) * to_space(pts[k - 1].beta_kips, s) + t * to_space(pts[k + 1].beta_kips, s), s);
+          record(u + beta * c999, pts[k].u_kips + pts[k].beta_kips * c999);
+        }
+      }
+    }
+  }
+  LooStats st;
+  st.space = s;
+  st.axis = axis;
+  st.samples = static_cast<int>(rel.size());
+  std::sort(rel.begin(), rel.end());
+  std::sort(abs_err.begin(), abs_err.end());
+  st.median_rel_error = percentile(rel, 0.5);
+  st.p90_rel_error = percentile(rel, 0.9);
+  st.max_rel_error = rel.empty() ? kNaN : rel.back();
+  st.median_abs_error_kips = percentile(abs_err, 0.5);
+  return st;
+}
+
+// ---------------------------------------------------------------------------
+// Inverse queries: bracketed search over the interpolant.
+
+SearchResult Engine::max_speed(const Request& request) const { return search(request, kSpeed, true); }
+SearchResult Engine::min_length(const Request& request) const { return search(request, kLength, false); }
+
+SearchResult Engine::search(const Request& request, int axis, bool maximise) const {
+  Request base = request;
+  double& field = axis == kSpeed ? base.speed_kt : base.length_ft;
+  const std::string name = axis == kSpeed ? "speed_kt" : "length_ft";
+  if (std::isnan(field)) field = 1.0;  // placeholder: validated below, then overwritten
+  base.validate();
+  const Group& g = find_group(base);
+  const auto& ax = g.axis[axis];
+  SearchResult res;
+  res.range_low = ax.front();
+  res.range_high = ax.back();
+
+  // Samples: every stored value and kSub - 1 points inside every cell.
+  constexpr int kSub = 8;
+  std::vector<double> xs;
+  for (std::size_t i = 0; i + 1 < ax.size(); ++i) {
+    for (int k = 0; k < kSub; ++k) xs.push_back(ax[i] + (ax[i + 1] - ax[i]) * k / kSub);
+  }
+  xs.push_back(ax.back());
+
+  std::string first_failure;
+  int failures = 0;
+  // 1: passes both checks; 0: fails one; -1: cannot be evaluated (outside the data there).
+  auto passes = [&](double x) {
+    ++res.evaluations;
+    field = x;
+    try {
+      const Answer a = query(base);
+      return a.extreme_check_passed && a.mean_check_passed ? 1 : 0;
+    } catch (const InputError& e) {
+      if (first_failure.empty()) first_failure = e.what();
+      ++failures;
+      return -1;
+    } catch (const NumericalError& e) {
+      if (first_failure.empty()) first_failure = e.what();
+      ++failures;
+      return -1;
+    }
+  };
+  const int n = static_cast<int>(xs.size());
+  int hit = -1;
+  if (maximise) {
+    for (int i = n - 1; i >= 0 && hit < 0; --i) {
+      if (passes(xs[i]) == 1) hit = i;
+    }
+  } else {
+    for (int i = 0; i < n && hit < 0; ++i) {
+      if (passes(xs[i]) == 1) hit = i;
+    }
+  }
+  if (hit >= 0) {
+    res.found = true;
+    const bool at_end = maximise ? hit == n - 1 : hit == 0;
+    if (at_end) {
+      res.value = xs[hit];
+    } else {
+      double good = xs[hit], bad = maximise ? xs[hit + 1] : xs[hit - 1];
+      // Bisection to a millionth of the searched range.
+      const double tol = 1e-6 * std::max(res.range_high - res.range_low, 1.0);
+      while (std::abs(bad - good) > tol) {
+        const double mid = 0.5 * (good + bad);
+        if (passes(mid) == 1) {
+          good = mid;
+        } else {
+          bad = mid;
+        }
+      }
+      res.value = good;
+    }
+  }
+  if (failures > 0) {
+    res.warnings.push_back({WarningKind::kIncompleteGrid,
+                            std::to_string(failures) + " of " + std::to_string(res.evaluations) + " " + name +
+                                " values searched could not be evaluated (treated as failing); first: " +
+                                first_failure});
+  }
+  return res;
+}
+
+}  // namespace towdb::query

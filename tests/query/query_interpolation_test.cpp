@@ -1,0 +1,490 @@
+// Interpolation, statistics and inverse queries of the query library, on
+// synthetic databases whose Gumbel parameters are known analytic functions of
+// the inputs (tests/query/synthetic_db.hpp). Equations: towdb/query.h.
+// Test plan:
+//   query-interp-1  every stored case is reproduced exactly (linear and log space)
+//   query-interp-2  a multilinear function is reproduced exactly anywhere in the grid (linear space)
+//   query-interp-3  an exp(multilinear) function is reproduced exactly in log space; auto picks log
+//   query-interp-4  heading folding: h and 360 - h give identical answers
+//   query-interp-5  D-day and any-probability quantiles satisfy F(x)^D = 1 - p
+//   query-interp-6  thesis Appendix A check value (mean 41.06, variance 10.80 -> 57.27 kips)
+//   query-interp-7  the error estimate equals the true error for a quadratic; CI scaling
+//   query-interp-8  monotone in wind on monotone data; a warning where the data is not
+//   query-interp-9  Navy Towing Manual checks and limits; warnings (slack, above BS, > 300 kips)
+//   query-interp-10 extrapolation: refused, then exact for linear data with a warning
+//   query-interp-11 incomplete grid: refused, then renormalised with a warning
+//   query-interp-12 inverse queries land on the analytic crossing; "none passes"
+//   query-interp-13 nearest cases are sorted by distance and start at the node queried
+//   query-interp-14 leave-one-out error of a quadratic equals a h^2
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "common/constants.hpp"
+#include "synthetic_db.hpp"
+#include "test_support.hpp"
+#include "towdb/query.hpp"
+
+namespace towdb::test {
+namespace {
+
+using query::Database;
+using query::QueryError;
+using query::QueryRequest;
+using query::QueryResult;
+
+// Round-off of a 16-corner weighted sum and one mean-tension interpolation:
+// a few ulp per operation on values of order 100.
+constexpr double kRoundOffRelTol = 1e-12;
+// The thesis prints the Appendix A inputs and output with two decimals: the
+// rounded mean (+-0.005), the rounded variance (+-0.005 kips^2, times
+// dx/dvar = 4.94/(2 sigma) = 0.75) and the printed output (+-0.005) allow
+// |x - 57.27| <= 0.0138 kips.
+constexpr double kThesisPrintAbsTol_kips = 0.014;
+
+double u_multilinear(double s, double w, double h, double l, double m) {
+  return 5.0 + 1.5 * s + 2.0 * w + 0.05 * h - 0.01 * l + 0.0004 * m + 0.02 * s * w - 0.00001 * w * l +
+         5e-6 * w * m;
+}
+double beta_multilinear(double s, double w, double h, double /*l*/, double m) {
+  return 2.0 + 0.1 * w + 0.00002 * m + 0.01 * s + 0.002 * h;
+}
+double u_exponential(double s, double w, double h, double l, double m) {
+  return 40.0 * std::exp(0.05 * s + 0.03 * w - 0.0005 * l + 0.002 * h + 5e-6 * m);
+}
+double beta_exponential(double /*s*/, double w, double /*h*/, double /*l*/, double m) {
+  return 8.0 * std::exp(0.02 * w + 3e-6 * m);
+}
+
+class QueryTest : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = make_temp_dir("towdb-query"); }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string write(const std::vector<SyntheticCase>& cases, const std::string& name = "t.towdb") {
+    const auto p = dir_ / name;
+    write_synthetic_db(p, cases);
+    return p.string();
+  }
+  std::filesystem::path dir_;
+};
+
+QueryRequest request(double s, double w, double h, double l, double m) {
+  QueryRequest r;
+  r.tug = "T-ATF 166";
+  r.tow = "LHA 1";
+  r.line = "wire";
+  r.values.speed_kt = s;
+  r.values.wind_kt = w;
+  r.values.heading_deg = h;
+  r.values.length_ft = l;
+  r.values.mean_tension_lbf = m;
+  return r;
+}
+
+// The mean tensions every corner node of the (speed, wind) cell holds:
+// [0.6 max nominal, 1.15 min nominal] (synthetic_db.hpp mean_factors).
+std::pair<double, double> common_mean_range(const GridSpec& g, double s, double w) {
+  auto cell = [](const std::vector<double>& axis, double q) {
+    auto hi = std::upper_bound(axis.begin(), axis.end(), q);
+    if (hi == axis.end()) --hi;
+    return std::pair<double, double>(*(hi - 1), *hi);
+  };
+  const auto [s0, s1] = cell(g.speeds_kt, s);
+  const auto [w0, w1] = cell(g.winds_kt, w);
+  double lo = 0.0, hi = 1e300;
+  for (double ss : {s0, s1}) {
+    for (double ww : {w0, w1}) {
+      lo = std::max(lo, 0.6 * g.nominal_mean_lbf(ss, ww));
+      hi = std::min(hi, 1.15 * g.nominal_mean_lbf(ss, ww));
+    }
+  }
+  return {lo, hi};
+}
+
+GridSpec multilinear_grid() {
+  GridSpec g;
+  g.u_kips = u_multilinear;
+  g.beta_kips = beta_multilinear;
+  return g;
+}
+
+bool has_warning(const QueryResult& r, int kind) {
+  return std::any_of(r.warnings.begin(), r.warnings.end(), [&](const auto& w) { return w.kind == kind; });
+}
+
+// query-interp-1
+TEST_F(QueryTest, ReproducesEveryStoredCaseExactly) {
+  // EVIDENCE-OF: EQ-QUERY-6 (weights 1 at a node; mean tension at a stored value)
+  const GridSpec g = multilinear_grid();
+  const auto cases = grid_cases(g);
+  const std::string path = write(cases);
+  for (int space : {TOWDB_QUERY_SPACE_LINEAR, TOWDB_QUERY_SPACE_LOG}) {
+    Database db(path, space);
+    ASSERT_EQ(db.case_count(), static_cast<int>(cases.size()));
+    for (const SyntheticCase& c : cases) {
+      const QueryResult r =
+          db.query(request(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf));
+      EXPECT_EQ(r.values.gumbel_u_kips, c.u_kips);  // bit for bit
+      EXPECT_REL_CLOSE(r.values.gumbel_alpha_per_kip, c.alpha_per_kip, 1e-15);
+      EXPECT_REL_CLOSE(r.values.dynamic_999_kips, c.u_kips + reduced_variate_999() / c.alpha_per_kip, 1e-15);
+      EXPECT_EQ(r.values.interpolation_error_kips, 0.0);
+      EXPECT_EQ(r.values.extrapolated, 0);
+    }
+  }
+}
+
+// query-interp-2
+TEST_F(QueryTest, MultilinearFunctionIsReproducedAnywhere) {
+  // EVIDENCE-OF: EQ-QUERY-6 (multilinear weights are exact for multilinear data)
+  const GridSpec g = multilinear_grid();
+  Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LINEAR);
+  EXPECT_EQ(db.space(), TOWDB_QUERY_SPACE_LINEAR);
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> us(3.0, 9.0), uw(20.0, 35.0), uh(0.0, 180.0), ul(800.0, 2000.0), uf(0.0, 1.0);
+  for (int i = 0; i < 300; ++i) {
+    const double s = us(rng), w = uw(rng), h = uh(rng), l = ul(rng);
+    const auto [m0, m1] = common_mean_range(g, s, w);
+    const double m = m0 + uf(rng) * (m1 - m0);
+    const QueryResult r = db.query(request(s, w, h, l, m));
+    const double expected = u_multilinear(s, w, h, l, m) + reduced_variate_999() * beta_multilinear(s, w, h, l, m);
+    EXPECT_REL_CLOSE(r.values.dynamic_999_kips, expected, kRoundOffRelTol) << s << " " << w << " " << h << " " << l << " " << m;
+    EXPECT_REL_CLOSE(r.values.gumbel_u_kips, u_multilinear(s, w, h, l, m), kRoundOffRelTol);
+  }
+}
+
+// query-interp-3
+TEST_F(QueryTest, ExponentialFunctionIsExactInLogSpaceAndAutoChoosesLog) {
+  // EVIDENCE-OF: EQ-QUERY-6 (log space), EQ-QUERY-8 (space chosen by leave-one-out)
+  GridSpec g;
+  g.u_kips = u_exponential;
+  g.beta_kips = beta_exponential;
+  const std::string path = write(grid_cases(g));
+  Database db(path);  // auto
+  EXPECT_EQ(db.space(), TOWDB_QUERY_SPACE_LOG);
+  const towdb_query_loo log_loo = db.leave_one_out(TOWDB_QUERY_SPACE_LOG);
+  const towdb_query_loo lin_loo = db.leave_one_out(TOWDB_QUERY_SPACE_LINEAR);
+  EXPECT_GT(log_loo.samples, 100);
+  EXPECT_LT(log_loo.max_rel_error, 1e-12);  // exp(linear) is linear in log space
+  EXPECT_GT(lin_loo.median_rel_error, 1e-4);
+  std::mt19937 rng(777);
+  std::uniform_real_distribution<double> us(3.0, 9.0), uw(20.0, 35.0), uh(0.0, 180.0), ul(800.0, 2000.0), uf(0.0, 1.0);
+  for (int i = 0; i < 200; ++i) {
+    const double s = us(rng), w = uw(rng), h = uh(rng), l = ul(rng);
+    const auto [m0, m1] = common_mean_range(g, s, w);
+    const double m = m0 + uf(rng) * (m1 - m0);
+    const QueryResult r = db.query(request(s, w, h, l, m));
+    EXPECT_EQ(r.values.interpolation_space, TOWDB_QUERY_SPACE_LOG);
+    EXPECT_REL_CLOSE(r.values.gumbel_u_kips, u_exponential(s, w, h, l, m), kRoundOffRelTol);
+    EXPECT_REL_CLOSE(1.0 / r.values.gumbel_alpha_per_kip, beta_exponential(s, w, h, l, m), kRoundOffRelTol);
+  }
+  // The same data with multilinear parameters: auto keeps linear space.
+  Database lin(write(grid_cases(multilinear_grid()), "lin.towdb"));
+  EXPECT_EQ(lin.space(), TOWDB_QUERY_SPACE_LINEAR);
+}
+
+// query-interp-4
+TEST_F(QueryTest, HeadingIsFoldedByPortStarboardSymmetry) {
+  // EVIDENCE-OF: EQ-QUERY-6 (h > 180 -> 360 - h)
+  const GridSpec g = multilinear_grid();
+  Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LINEAR);
+  for (double h : {0.0, 37.0, 60.0, 135.5, 180.0}) {
+    const QueryResult a = db.query(request(6.0, 25.0, h, 1200.0, 60000.0));
+    const QueryResult b = db.query(request(6.0, 25.0, 360.0 - h, 1200.0, 60000.0));
+    EXPECT_EQ(a.values.dynamic_tension_kips, b.values.dynamic_tension_kips) << h;
+  }
+}
+
+// query-interp-5
+TEST_F(QueryTest, LongerTowsAndOtherProbabilitiesFollowTheGumbelLaw) {
+  // EVIDENCE-OF: EQ-QUERY-2, EQ-QUERY-3, EQ-QUERY-4
+  const GridSpec g = multilinear_grid();
+  const auto cases = grid_cases(g);
+  Database db(write(cases), TOWDB_QUERY_SPACE_LINEAR);
+  const SyntheticCase& c = cases[17];
+  const double beta = 1.0 / c.alpha_per_kip;
+  for (double days : {1.0, 7.0, 30.0}) {
+    for (double p : {0.5, 0.01, 0.001, 1e-5}) {
+      QueryRequest rq = request(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf);
+      rq.values.probability = p;
+      rq.values.tow_days = days;
+      const QueryResult r = db.query(rq);
+      const double x = r.values.dynamic_tension_kips;
+      // The D-day maximum's distribution F(x)^D must equal 1 - p at the answer.
+      const double f_d = std::pow(std::exp(-std::exp(-(x - c.u_kips) / beta)), days);
+      EXPECT_REL_CLOSE(f_d, 1.0 - p, 1e-12) << days << " " << p;
+      EXPECT_REL_CLOSE(r.values.extreme_tension_lbf, c.mean_tension_lbf + 1000.0 * x, 1e-15);
+    }
+  }
+}
+
+// query-interp-6
+TEST_F(QueryTest, ThesisAppendixACheckValue) {
+  // EVIDENCE-OF: EQ-QUERY-3. Physics notes section 9 / thesis Appendix A sample
+  // output: daily maxima with mean 41.06 kips and variance 10.80 kips^2 give a
+  // method-of-moments Type I with x_0.999 = 57.27 kips.
+  SyntheticCase c;
+  const double alpha = kPi / std::sqrt(6.0 * 10.80);
+  c.alpha_per_kip = alpha;
+  c.u_kips = 41.06 - kEulerGamma / alpha;
+  Database db(write({c}));
+  const QueryResult r = db.query(request(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf));
+  EXPECT_ABS_CLOSE(r.values.dynamic_tension_kips, 57.27, kThesisPrintAbsTol_kips);
+}
+
+// query-interp-7
+TEST_F(QueryTest, ErrorEstimateIsExactForAQuadraticAndCiIsScaled) {
+  // EVIDENCE-OF: EQ-QUERY-7. Linear interpolation of f = a w^2 over a cell of
+  // width h errs by t (1 - t) h^2 a, and the second divided difference of a
+  // quadratic is exactly a, so estimate and error agree.
+  constexpr double kA = 0.05;  // kips per kt^2
+  GridSpec g;
+  g.u_kips = [](double s, double w, double, double l, double) { return 20.0 + kA * w * w + 0.5 * s - 0.001 * l; };
+  g.beta_kips = [](double, double, double, double, double) { return 5.0; };
+  auto cases = grid_cases(g);
+  for (auto& c : cases) {
+    c.ci_low_kips = 100.0;
+    c.ci_high_kips = 108.0;  // half-width 4 kips
+  }
+  Database db(write(cases), TOWDB_QUERY_SPACE_LINEAR);
+  for (double w : {22.0, 25.0, 28.5, 31.0, 33.0}) {
+    const double s = 5.0, l = 1500.0, m = 60000.0;
+    const QueryResult r = db.query(request(s, w, 60.0, l, m));
+    const double truth = 20.0 + kA * w * w + 0.5 * s - 0.001 * l + 5.0 * reduced_variate_999();
+    const double actual_error = std::abs(r.values.dynamic_999_kips - truth);
+    EXPECT_GT(actual_error, 0.1) << w;
+    EXPECT_REL_CLOSE(r.values.interpolation_error_kips, actual_error, 1e-9) << w;
+    EXPECT_REL_CLOSE(r.values.uncertainty_kips, std::hypot(actual_error, 4.0), 1e-9) << w;
+  }
+  // CI half-width scaled by sqrt(1 + 1.1396 K + 1.1 K^2) (Kite 1977) to (p, D).
+  auto se = [](double p, double d) {
+    const double k = std::sqrt(6.0) / kPi * (std::log(d) - std::log(-std::log(1.0 - p)) - kEulerGamma);
+    return std::sqrt(1.0 + 1.1396 * k + 1.1 * k * k);
+  };
+  QueryRequest rq = request(5.0, 30.0, 60.0, 1500.0, 60000.0);  // a node: no interpolation error
+  rq.values.probability = 0.01;
+  rq.values.tow_days = 10.0;
+  const QueryResult r = db.query(rq);
+  EXPECT_EQ(r.values.interpolation_error_kips, 0.0);
+  EXPECT_REL_CLOSE(r.values.uncertainty_kips, 4.0 * se(0.01, 10.0) / se(0.001, 1.0), 1e-12);
+}
+
+// query-interp-8
+TEST_F(QueryTest, MoreWindNeverLowersTheAnswerOrAWarningSaysSo) {
+  // EVIDENCE-OF: EQ-QUERY-6 (linear-space answer is a positive combination of
+  // corner values), thesis 6.3.1 (wind speed is the most important variable).
+  const GridSpec g = multilinear_grid();
+  auto cases = grid_cases(g);
+  {
+    Database db(write(cases), TOWDB_QUERY_SPACE_LINEAR);
+    double previous = 0.0;
+    for (double w = 20.0; w <= 35.0; w += 0.25) {
+      const QueryResult r = db.query(request(6.3, w, 75.0, 1700.0, 65000.0));
+      EXPECT_GE(r.values.dynamic_tension_kips, previous) << w;
+      EXPECT_FALSE(has_warning(r, TOWDB_QUERY_WARN_NOT_MONOTONE)) << w;
+      previous = r.values.dynamic_tension_kips;
+    }
+  }
+  // Lower the stored answer at one 30 kt node below its 20 kt neighbour.
+  for (auto& c : cases) {
+    if (c.speed_kt == 5.0 && c.wind_kt == 30.0 && c.heading_deg == 60.0 && c.length_ft == 1500.0) c.u_kips = 1.0;
+  }
+  Database bad(write(cases, "bad.towdb"), TOWDB_QUERY_SPACE_LINEAR);
+  const QueryResult r = bad.query(request(5.0, 25.0, 60.0, 1500.0, 60000.0));
+  ASSERT_TRUE(has_warning(r, TOWDB_QUERY_WARN_NOT_MONOTONE));
+  const QueryResult fine = bad.query(request(5.0, 32.0, 60.0, 1500.0, 60000.0));
+  EXPECT_FALSE(has_warning(fine, TOWDB_QUERY_WARN_NOT_MONOTONE));
+}
+
+// query-interp-9
+TEST_F(QueryTest, NavyTowingManualChecksAndWarnings) {
+  // EVIDENCE-OF: EQ-QUERY-5: extreme <= BS/1.5; mean <= BS/3 (machine) or BS/5 (brake).
+  SyntheticCase c;
+  c.breaking_strength_lbf = 300000.0;
+  c.mean_tension_lbf = 90000.0;
+  c.alpha_per_kip = 1.0 / 5.0;
+  c.u_kips = 100.0 - 5.0 * reduced_variate_999();  // dynamic_999 = 100 kips
+  SyntheticCase slack = c;
+  slack.tow = "YRBM";
+  slack.slack_fraction = 0.05;
+  SyntheticCase big = c;
+  big.tow = "FFG 7";
+  big.u_kips = 320.0;  // > 300 kips and above breaking strength
+  Database db(write({c, slack, big}));
+  QueryRequest rq = request(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf);
+  QueryResult r = db.query(rq);
+  EXPECT_REL_CLOSE(r.values.dynamic_999_kips, 100.0, 1e-14);
+  EXPECT_EQ(r.values.breaking_strength_lbf, 300000.0);
+  EXPECT_EQ(r.values.extreme_limit_lbf, 200000.0);
+  EXPECT_EQ(r.values.mean_limit_lbf, 100000.0);
+  EXPECT_REL_CLOSE(r.values.extreme_tension_lbf, 190000.0, 1e-14);
+  EXPECT_EQ(r.values.extreme_check_passed, 1);
+  EXPECT_EQ(r.values.mean_check_passed, 1);
+  EXPECT_TRUE(r.warnings.empty());
+  rq.values.on_brake = 1;  // 90,000 > 300,000 / 5
+  r = db.query(rq);
+  EXPECT_EQ(r.values.mean_limit_lbf, 60000.0);
+  EXPECT_EQ(r.values.mean_check_passed, 0);
+  rq.values.on_brake = 0;
+  rq.values.probability = 1e-4;  // x = 100 + 5 (ln(-ln 0.999) - ln(-ln 0.9999)) = 111.5 kips
+  r = db.query(rq);
+  EXPECT_REL_CLOSE(r.values.dynamic_tension_kips, 100.0 + 5.0 * (std::log(-std::log(0.999)) - std::log(-std::log(0.9999))), 1e-14);
+  EXPECT_EQ(r.values.extreme_check_passed, 0);
+
+  QueryRequest ry = request(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf);
+  ry.tow = "yrbm";
+  r = db.query(ry);
+  EXPECT_TRUE(has_warning(r, TOWDB_QUERY_WARN_SLACK));
+  EXPECT_EQ(r.values.slack_fraction, 0.05);
+  ry.tow = "ffg7";
+  r = db.query(ry);
+  EXPECT_TRUE(has_warning(r, TOWDB_QUERY_WARN_HIGH_TENSION));
+  EXPECT_TRUE(has_warning(r, TOWDB_QUERY_WARN_ABOVE_BREAKING));
+  EXPECT_FALSE(has_warning(r, TOWDB_QUERY_WARN_SLACK));
+}
+
+// query-interp-10
+TEST_F(QueryTest, ExtrapolationIsRefusedUnlessAskedThenLinear) {
+  // EVIDENCE-OF: EQ-QUERY-6 (end-cell linear extrapolation is exact for linear data)
+  const GridSpec g = multilinear_grid();
+  Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LINEAR);
+  QueryRequest rq = request(10.0, 25.0, 60.0, 1500.0, 50000.0);
+  try {
+    db.query(rq);
+    FAIL() << "speed 10 kt is outside [3, 9]";
+  } catch (const QueryError& e) {
+    EXPECT_EQ(e.code(), TOWDB_QUERY_RANGE);
+    EXPECT_NE(std::string(e.what()).find("speed_kt = 10 is outside the stored range [3, 9]"), std::string::npos)
+        << e.what();
+  }
+  rq.values.extrapolate = 1;
+  const QueryResult r = db.query(rq);
+  EXPECT_EQ(r.values.extrapolated, 1);
+  EXPECT_TRUE(has_warning(r, TOWDB_QUERY_WARN_EXTRAPOLATED));
+  // Mean 50,000 lbf lies below the stored mean tensions of the 9 kt nodes
+  // (0.6 x 94,000 lbf) too: both extrapolations are linear, so the
+  // multilinear function is exact.
+  EXPECT_REL_CLOSE(r.values.dynamic_999_kips,
+                   u_multilinear(10.0, 25.0, 60.0, 1500.0, 50000.0) +
+                       reduced_variate_999() * beta_multilinear(10.0, 25.0, 60.0, 1500.0, 50000.0),
+                   kRoundOffRelTol);
+  QueryRequest low_mean = request(5.0, 25.0, 60.0, 1500.0, 10000.0);
+  try {
+    db.query(low_mean);
+    FAIL() << "10,000 lbf is below every stored mean tension";
+  } catch (const QueryError& e) {
+    EXPECT_EQ(e.code(), TOWDB_QUERY_RANGE);
+    EXPECT_NE(std::string(e.what()).find("mean_tension_lbf = 10000 is outside the mean tensions stored at"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// query-interp-11
+TEST_F(QueryTest, IncompleteGridIsRefusedThenRenormalised) {
+  const GridSpec g = multilinear_grid();
+  auto cases = grid_cases(g);
+  std::erase_if(cases, [](const SyntheticCase& c) {
+    return c.speed_kt == 9.0 && c.wind_kt == 35.0 && c.heading_deg == 180.0 && c.length_ft == 2000.0;
+  });
+  Database db(write(cases), TOWDB_QUERY_SPACE_LINEAR);
+  QueryRequest rq = request(8.0, 33.0, 170.0, 1900.0, 80000.0);
+  try {
+    db.query(rq);
+    FAIL() << "a corner node is missing";
+  } catch (const QueryError& e) {
+    EXPECT_EQ(e.code(), TOWDB_QUERY_RANGE);
+    EXPECT_NE(std::string(e.what()).find("no stored case at T-ATF 166 / LHA 1 / wire at speed 9 kt, wind 35 kt"),
+              std::string::npos)
+        << e.what();
+  }
+  rq.values.extrapolate = 1;
+  const QueryResult r = db.query(rq);
+  EXPECT_TRUE(has_warning(r, TOWDB_QUERY_WARN_INCOMPLETE_GRID));
+  EXPECT_TRUE(std::isfinite(r.values.dynamic_tension_kips));
+  // A node next to the hole is still answered exactly without extrapolation.
+  const QueryResult node = db.query(request(9.0, 35.0, 120.0, 2000.0, 0.6 * g.nominal_mean_lbf(9.0, 35.0)));
+  EXPECT_EQ(node.values.extrapolated, 0);
+}
+
+// query-interp-12
+TEST_F(QueryTest, InverseQueriesFindTheAnalyticCrossing) {
+  // EVIDENCE-OF: EQ-QUERY-5. dynamic_999(s, l) = 250 + 10 s - 0.1 l + 5 y_999
+  // (y_999 = -ln(-ln 0.999)); with mean 70,000 lbf and BS 360,000 lbf the
+  // extreme check is mean + 1000 x <= 240,000 lbf, i.e. x <= 170 kips.
+  GridSpec g;
+  g.nominal_mean_lbf = [](double, double) { return 70000.0; };
+  g.u_kips = [](double s, double, double, double l, double) { return 250.0 + 10.0 * s - 0.1 * l; };
+  g.beta_kips = [](double, double, double, double, double) { return 5.0; };
+  Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LINEAR);
+  const double y = reduced_variate_999();
+  // Bisection to 1e-6 of the searched range (query.h).
+  constexpr double kSpeedTol_kt = 1e-5, kLengthTol_ft = 1e-2;
+
+  QueryRequest rq = request(kNoValue, 30.0, 60.0, 1800.0, 70000.0);
+  auto s = db.max_speed(rq);
+  ASSERT_EQ(s.search.found, 1);
+  EXPECT_ABS_CLOSE(s.search.value, (170.0 - 250.0 + 0.1 * 1800.0 - 5.0 * y) / 10.0, kSpeedTol_kt);  // 6.546 kt
+  EXPECT_EQ(s.search.range_low, 3.0);
+  EXPECT_EQ(s.search.range_high, 9.0);
+  EXPECT_EQ(s.at_value.values.extreme_check_passed, 1);
+
+  rq = request(6.0, 30.0, 60.0, kNoValue, 70000.0);
+  auto l = db.min_length(rq);
+  ASSERT_EQ(l.search.found, 1);
+  EXPECT_ABS_CLOSE(l.search.value, (250.0 + 60.0 + 5.0 * y - 170.0) / 0.1, kLengthTol_ft);  // 1745 ft
+
+  // On the brake the mean limit is BS/5 = 72,000 lbf: 78,000 lbf fails at every speed.
+  rq = request(kNoValue, 30.0, 60.0, 1800.0, 78000.0);
+  rq.values.on_brake = 1;  // 78,000 > 360,000 / 5
+  s = db.max_speed(rq);
+  EXPECT_EQ(s.search.found, 0);
+  EXPECT_TRUE(std::isnan(s.search.value));
+}
+
+// query-interp-13
+TEST_F(QueryTest, NearestCasesStartAtTheQueriedNode) {
+  const GridSpec g = multilinear_grid();
+  Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LINEAR);
+  const double m = g.nominal_mean_lbf(5.0, 30.0);
+  const QueryResult r = db.query(request(5.1, 30.0, 60.0, 1500.0, m * 1.02));
+  ASSERT_EQ(r.nearest.size(), 4u);
+  EXPECT_EQ(r.nearest[0].speed_kt, 5.0);
+  EXPECT_EQ(r.nearest[0].wind_kt, 30.0);
+  EXPECT_EQ(r.nearest[0].length_ft, 1500.0);
+  for (std::size_t i = 1; i < r.nearest.size(); ++i) EXPECT_LE(r.nearest[i - 1].distance, r.nearest[i].distance);
+  const auto& c = r.nearest[0];
+  EXPECT_REL_CLOSE(c.dynamic_999_kips,
+                   u_multilinear(5.0, 30.0, 60.0, 1500.0, c.mean_tension_lbf) +
+                       reduced_variate_999() * beta_multilinear(5.0, 30.0, 60.0, 1500.0, c.mean_tension_lbf),
+                   1e-14);
+}
+
+// query-interp-14
+TEST_F(QueryTest, LeaveOneOutOfAQuadraticIsAHSquared) {
+  // EVIDENCE-OF: EQ-QUERY-8. Predicting f(w) = a w^2 at w from w - h and w + h
+  // errs by exactly a h^2; all other axes are linear (zero error).
+  constexpr double kA = 0.05;
+  GridSpec g;
+  g.winds_kt = {20.0, 30.0, 40.0};
+  g.u_kips = [](double s, double w, double, double, double) { return 20.0 + kA * w * w + s; };
+  g.beta_kips = [](double, double, double, double, double) { return 5.0; };
+  Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LINEAR);
+  const towdb_query_loo sea = db.leave_one_out(TOWDB_QUERY_SPACE_LINEAR, TOWDB_QUERY_AXIS_SEA);
+  ASSERT_GT(sea.samples, 0);
+  EXPECT_REL_CLOSE(sea.median_abs_error_kips, kA * 100.0, 1e-9);
+  const towdb_query_loo speed = db.leave_one_out(TOWDB_QUERY_SPACE_LINEAR, TOWDB_QUERY_AXIS_SPEED);
+  ASSERT_GT(speed.samples, 0);
+  EXPECT_LT(speed.max_rel_error, 1e-13);
+  // Relative errors a h^2 / x lie between those at the smallest and largest x.
+  const double y = reduced_variate_999();
+  EXPECT_GE(sea.max_rel_error, kA * 100.0 / (20.0 + kA * 900.0 + 9.0 + 5.0 * y) * (1 - 1e-12));
+  EXPECT_LE(sea.max_rel_error, kA * 100.0 / (20.0 + kA * 900.0 + 3.0 + 5.0 * y) * (1 + 1e-12));
+}
+
+}  // namespace
+}  // namespace towdb::test
