@@ -24,9 +24,15 @@ struct Context {
 io::ShipCatalog load_catalog(const Context& ctx);
 
 void add_ships_command(CLI::App& app, Context& ctx);
+void add_build_command(CLI::App& app, Context& ctx);  // build, status, sweep
+// Registers the simulation chain as the case runner of `towdb build`.
+void register_case_runner();
+void add_mean_tension_command(CLI::App& app, Context& ctx);
 void add_simulate_command(CLI::App& app, Context& ctx);
 void add_query_commands(CLI::App& app, Context& ctx);  // query, max-speed, min-length
 void add_export_command(CLI::App& app, Context& ctx);
+void add_towline_command(CLI::App& app, Context& ctx);
+void add_vessel_command(CLI::App& app, Context& ctx);
 
 }  // namespace towdb::cli
 

@@ -16,9 +16,14 @@ int main(int argc, char** argv) {
   app.add_option("--ships-dir", ctx.ships_dir,
                  "Directory of vessel files (default: $TOWDB_SHIPS_DIR or the bundled ships/)");
   towdb::cli::add_ships_command(app, ctx);
+  towdb::cli::add_build_command(app, ctx);
+  towdb::cli::register_case_runner();
+  towdb::cli::add_mean_tension_command(app, ctx);
   towdb::cli::add_simulate_command(app, ctx);
   towdb::cli::add_query_commands(app, ctx);
   towdb::cli::add_export_command(app, ctx);
+  towdb::cli::add_towline_command(app, ctx);
+  towdb::cli::add_vessel_command(app, ctx);
 
   try {
     app.parse(argc, argv);

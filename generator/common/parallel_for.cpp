@@ -10,12 +10,14 @@ namespace towdb {
 
 int max_threads() { return omp_get_max_threads(); }
 
-void parallel_for(std::int64_t begin, std::int64_t end, int num_threads,
-                  const std::function<void(std::int64_t)>& fn) {
+int workers(int num_threads) { return num_threads > 0 ? num_threads : omp_get_max_threads(); }
+
+void parallel_for_workers(std::int64_t begin, std::int64_t end, int num_threads,
+                          const std::function<void(std::int64_t, int)>& fn) {
   if (end <= begin) return;
-  const int threads = num_threads > 0 ? num_threads : omp_get_max_threads();
+  const int threads = workers(num_threads);
   if (threads == 1 || end - begin == 1) {
-    for (std::int64_t i = begin; i < end; ++i) fn(i);
+    for (std::int64_t i = begin; i < end; ++i) fn(i, 0);
     return;
   }
   std::mutex mutex;
@@ -24,7 +26,7 @@ void parallel_for(std::int64_t begin, std::int64_t end, int num_threads,
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (std::int64_t i = begin; i < end; ++i) {
     try {
-      fn(i);
+      fn(i, omp_get_thread_num());
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex);
       if (i < first_error_index) {
@@ -34,6 +36,11 @@ void parallel_for(std::int64_t begin, std::int64_t end, int num_threads,
     }
   }
   if (first_error) std::rethrow_exception(first_error);
+}
+
+void parallel_for(std::int64_t begin, std::int64_t end, int num_threads,
+                  const std::function<void(std::int64_t)>& fn) {
+  parallel_for_workers(begin, end, num_threads, [&fn](std::int64_t i, int) { fn(i); });
 }
 
 }  // namespace towdb

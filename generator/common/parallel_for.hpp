@@ -18,6 +18,15 @@ namespace towdb {
 void parallel_for(std::int64_t begin, std::int64_t end, int num_threads,
                   const std::function<void(std::int64_t)>& fn);
 
+// The same, also passing the worker number w in [0, workers(num_threads)), so
+// that fn can reuse per-worker scratch storage (results must still not
+// depend on which worker ran an index).
+void parallel_for_workers(std::int64_t begin, std::int64_t end, int num_threads,
+                          const std::function<void(std::int64_t index, int worker)>& fn);
+
+// Number of workers parallel_for uses for num_threads (<= 0: all available).
+int workers(int num_threads);
+
 // Number of threads parallel_for uses for num_threads <= 0.
 int max_threads();
 

@@ -4,7 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <bit>
+#include <future>
+#include <map>
 #include <mutex>
+#include <string>
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
@@ -118,6 +122,57 @@ T interpolate(const std::vector<double>& x, const std::vector<T>& y, double xq) 
   return y[i - 1] + (y[i] - y[i - 1]) * t;
 }
 
+// Process-wide memo of strip-theory responses: a sweep shares them between
+// all cases with the same vessel, speed, heading and grid (wind, towline and
+// mean tension do not enter). Concurrent requests wait for one computation.
+class ResponseCache {
+ public:
+  using Responses = std::vector<seakeeping::VesselResponse>;
+  std::shared_ptr<const Responses> get(const model::Vessel& vessel, double speed_m_s, double heading_rad,
+                                       const std::vector<double>& omegas, const seakeeping::ResponseOptions& o) {
+    std::string key = vessel.name + "|" + vessel.content_sha256;
+    auto add = [&key](double x) { key += "|" + std::to_string(std::bit_cast<std::uint64_t>(x)); };
+    add(speed_m_s);
+    add(heading_rad);
+    for (double w : omegas) add(w);
+    add(o.min_encounter_frequency_nondim);
+    key += o.transom_terms ? "|t" : "|n";
+    key += o.added_resistance_aft_of_beam ? "|a" : "|z";
+    std::promise<std::shared_ptr<const Responses>> promise;
+    std::shared_future<std::shared_ptr<const Responses>> future;
+    bool compute = false;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      auto it = entries_.find(key);
+      if (it == entries_.end()) {
+        future = promise.get_future().share();
+        entries_.emplace(key, future);
+        compute = true;
+      } else {
+        future = it->second;
+      }
+    }
+    if (compute) {
+      try {
+        promise.set_value(std::make_shared<const Responses>(
+            seakeeping::compute_response(vessel, speed_m_s, heading_rad, omegas, o)));
+      } catch (...) {
+        promise.set_exception(std::current_exception());
+      }
+    }
+    return future.get();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<std::string, std::shared_future<std::shared_ptr<const Responses>>> entries_;
+};
+
+ResponseCache& response_cache() {
+  static ResponseCache cache;
+  return cache;
+}
+
 }  // namespace
 
 struct CaseModel {
@@ -130,6 +185,20 @@ struct CaseModel {
   std::vector<Complex> h_f1_tug, h_f1_tow, h_xi_ns;
   CaseResult partial;  // everything known before the days are simulated
 };
+
+std::shared_ptr<const std::vector<seakeeping::VesselResponse>> cached_responses(
+    const model::Vessel& vessel, double speed_m_s, double heading_rad, const std::vector<double>& omegas_rad_s,
+    const seakeeping::ResponseOptions& options) {
+  return response_cache().get(vessel, speed_m_s, heading_rad, omegas_rad_s, options);
+}
+
+std::vector<double> response_grid(const CaseOptions& options) {
+  const int n = options.response_frequencies;
+  const double lo = options.response_omega_min_rad_s, hi = options.response_omega_max_rad_s;
+  std::vector<double> omega;
+  for (int i = 0; i < n; ++i) omega.push_back(lo + (hi - lo) * i / (n - 1));
+  return omega;
+}
 
 void CaseInputs::validate() const {
   if (!tug || !tow) throw InputError("case: tug and tow must be given");
@@ -149,6 +218,9 @@ void CaseOptions::validate() const {
   towline.validate();
   response.validate();
   require_in_range("case options: response_frequencies", response_frequencies, 8, 2000);
+  require_in_range("case options: response_omega_min_rad_s", response_omega_min_rad_s, 0.01, 2.0);
+  require_input(response_omega_max_rad_s > response_omega_min_rad_s + 0.1, "case options: response_omega_max_rad_s",
+                response_omega_max_rad_s, "must exceed response_omega_min_rad_s by at least 0.1 rad/s");
   tug_propeller.validate();
   tow_propeller.validate();
   record.validate();
@@ -218,19 +290,14 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
   std::vector<SystemGrid> grids(n_systems);
   for (std::size_t s = 0; s < n_systems; ++s) {
     const sea::WaveSystem& system = inputs.sea.systems[s];
-    double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-    for (const auto& c : comps) {
-      if (c.system != static_cast<int>(s)) continue;
-      lo = std::min(lo, c.omega_rad_s);
-      hi = std::max(hi, c.omega_rad_s);
-    }
+    bool has_components = false;
+    for (const auto& c : comps) has_components = has_components || c.system == static_cast<int>(s);
     SystemGrid& g = grids[s];
     g.heading_rad = system.heading_rad;
-    if (!(hi > lo)) continue;  // no component of this system survived the cut-off
-    const int n = options.response_frequencies;
-    for (int i = 0; i < n; ++i) g.omega.push_back(lo + (hi - lo) * i / (n - 1));
-    g.tug_response = seakeeping::compute_response(tug, u, system.heading_rad, g.omega, options.response);
-    g.tow_response = seakeeping::compute_response(tow, u, system.heading_rad, g.omega, options.response);
+    if (!has_components) continue;  // no component of this system survived the cut-off
+    g.omega = response_grid(options);
+    g.tug_response = *response_cache().get(tug, u, system.heading_rad, g.omega, options.response);
+    g.tow_response = *response_cache().get(tow, u, system.heading_rad, g.omega, options.response);
     const auto spectrum = [&system](double w) { return system.spectrum.density_m2_s(w); };
     const double r_tug_u = seakeeping::mean_added_resistance_n(g.tug_response, spectrum);
     const double r_tow_u = seakeeping::mean_added_resistance_n(g.tow_response, spectrum);
@@ -238,12 +305,12 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
     r.tow_added_resistance_n += r_tow_u;
     if (options.wave_surge_damping) {
       const double u2 = u + kWaveDampingSpeedStep_m_s;
-      const auto r_tug2 = seakeeping::compute_response(tug, u2, system.heading_rad, g.omega, options.response);
-      const auto r_tow2 = seakeeping::compute_response(tow, u2, system.heading_rad, g.omega, options.response);
+      const auto r_tug2 = response_cache().get(tug, u2, system.heading_rad, g.omega, options.response);
+      const auto r_tow2 = response_cache().get(tow, u2, system.heading_rad, g.omega, options.response);
       r.tug_wave_damping_n_s_m +=
-          (seakeeping::mean_added_resistance_n(r_tug2, spectrum) - r_tug_u) / kWaveDampingSpeedStep_m_s;
+          (seakeeping::mean_added_resistance_n(*r_tug2, spectrum) - r_tug_u) / kWaveDampingSpeedStep_m_s;
       r.tow_wave_damping_n_s_m +=
-          (seakeeping::mean_added_resistance_n(r_tow2, spectrum) - r_tow_u) / kWaveDampingSpeedStep_m_s;
+          (seakeeping::mean_added_resistance_n(*r_tow2, spectrum) - r_tow_u) / kWaveDampingSpeedStep_m_s;
     }
   }
   // A negative wave-induced damping (a resistance that falls with speed) is
@@ -311,14 +378,21 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
   return m;
 }
 
-DayForcing day_forcing(const CaseModel& m, std::uint64_t seed, std::uint64_t day) {
-  auto ws = m.synthesizer->make_workspace();
-  m.synthesizer->synthesize(seed, day, ws);
-  DayForcing f;
+namespace {
+
+// Per-worker scratch: the synthesizer's buffers and the day's forcing.
+struct DayScratch {
+  sea::DaySynthesizer::Workspace workspace;
+  DayForcing forcing;
+};
+
+void fill_forcing(const CaseModel& m, std::uint64_t seed, std::uint64_t day, DayScratch& s) {
+  m.synthesizer->synthesize(seed, day, s.workspace);
+  DayForcing& f = s.forcing;
   f.dt_s = m.synthesizer->plan().time_step_s();
-  const auto f1_tug = ws.linear(kF1Tug), f1_tow = ws.linear(kF1Tow);
-  const auto f2_tug = ws.drift(kF2Tug), f2_tow = ws.drift(kF2Tow);
-  const auto xi = ws.linear(kXiNs), xi_dot = ws.linear(kXiNsDot);
+  const auto f1_tug = s.workspace.linear(kF1Tug), f1_tow = s.workspace.linear(kF1Tow);
+  const auto f2_tug = s.workspace.drift(kF2Tug), f2_tow = s.workspace.drift(kF2Tow);
+  const auto xi = s.workspace.linear(kXiNs), xi_dot = s.workspace.linear(kXiNsDot);
   const std::size_t n = f1_tug.size();
   f.tug_force_n.resize(n);
   f.tow_force_n.resize(n);
@@ -328,7 +402,14 @@ DayForcing day_forcing(const CaseModel& m, std::uint64_t seed, std::uint64_t day
   }
   f.xi_ns_m.assign(xi.begin(), xi.end());
   f.xi_ns_dot_m_s.assign(xi_dot.begin(), xi_dot.end());
-  return f;
+}
+
+}  // namespace
+
+DayForcing day_forcing(const CaseModel& m, std::uint64_t seed, std::uint64_t day) {
+  DayScratch s{m.synthesizer->make_workspace(), {}};
+  fill_forcing(m, seed, day, s);
+  return std::move(s.forcing);
 }
 
 DayStatistics simulate_day(const CaseModel& m, const DayForcing& forcing, const IntegratorOptions& options,
@@ -376,22 +457,25 @@ CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options) {
   std::vector<long> substeps(static_cast<std::size_t>(days));
   std::mutex progress_mutex;
   int done = 0;
-  parallel_for(0, days, options.num_threads, [&](std::int64_t d) {
+  std::vector<std::unique_ptr<DayScratch>> scratch(static_cast<std::size_t>(workers(options.num_threads)));
+  parallel_for_workers(0, days, options.num_threads, [&](std::int64_t d, int worker) {
     const std::size_t i = static_cast<std::size_t>(d);
+    auto& s = scratch[static_cast<std::size_t>(worker)];
+    if (!s) s = std::make_unique<DayScratch>(DayScratch{m->synthesizer->make_workspace(), {}});
     auto t = Clock::now();
-    const DayForcing f = day_forcing(*m, inputs.seed, static_cast<std::uint64_t>(d));
+    fill_forcing(*m, inputs.seed, static_cast<std::uint64_t>(d), *s);
     synth_s[i] = seconds_since(t);
     t = Clock::now();
-    const DayStatistics s = simulate_day(*m, f, options.integrator);
+    const DayStatistics st = simulate_day(*m, s->forcing, options.integrator);
     integ_s[i] = seconds_since(t);
     DayResult& out = r.days[i];
-    out.max_dynamic_tension_n = s.max_tension_n;
-    out.slack_time_s = s.slack_time_s;
-    out.snatch_events = s.snatch_events;
-    const double n = static_cast<double>(s.samples);
-    out.tension_mean_n = s.tension_sum_n / n;
-    out.tension_variance_n2 = std::max(0.0, s.tension_sum_sq_n2 / n - out.tension_mean_n * out.tension_mean_n);
-    substeps[i] = s.substeps;
+    out.max_dynamic_tension_n = st.max_tension_n;
+    out.slack_time_s = st.slack_time_s;
+    out.snatch_events = st.snatch_events;
+    const double n = static_cast<double>(st.samples);
+    out.tension_mean_n = st.tension_sum_n / n;
+    out.tension_variance_n2 = std::max(0.0, st.tension_sum_sq_n2 / n - out.tension_mean_n * out.tension_mean_n);
+    substeps[i] = st.substeps;
     if (options.progress) {
       std::lock_guard<std::mutex> lock(progress_mutex);
       options.progress(++done, days);
@@ -441,13 +525,28 @@ CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options) {
   st.ci_level = ci.level;
   st.ci_low_n = ci.lower;
   st.ci_high_n = ci.upper;
-  const auto ml = statistics::fit_gumbel_ml(maxima);
-  st.gumbel_ml_u_n = ml.distribution.location;
-  st.gumbel_ml_alpha_per_n = ml.distribution.alpha();
-  const auto gev = statistics::fit_gev_ml(maxima);
-  st.gev_mu_n = gev.distribution.location;
-  st.gev_sigma_n = gev.distribution.scale;
-  st.gev_xi = gev.distribution.shape;
+  // The maximum-likelihood Gumbel and GEV fits are secondary (the database
+  // value is the moments fit, as in the thesis): they need at least
+  // kMinDaysForMlFits days, and a fit that does not converge is recorded as
+  // NaN (NULL in the database) rather than failing the case.
+  constexpr std::size_t kMinDaysForMlFits = 10;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  st.gumbel_ml_u_n = st.gumbel_ml_alpha_per_n = st.gev_mu_n = st.gev_sigma_n = st.gev_xi = nan;
+  if (maxima.size() >= kMinDaysForMlFits) {
+    try {
+      const auto ml = statistics::fit_gumbel_ml(maxima);
+      st.gumbel_ml_u_n = ml.distribution.location;
+      st.gumbel_ml_alpha_per_n = ml.distribution.alpha();
+    } catch (const NumericalError&) {
+    }
+    try {
+      const auto gev = statistics::fit_gev_ml(maxima);
+      st.gev_mu_n = gev.distribution.location;
+      st.gev_sigma_n = gev.distribution.scale;
+      st.gev_xi = gev.distribution.shape;
+    } catch (const NumericalError&) {
+    }
+  }
   st.anderson_darling = statistics::anderson_darling(maxima, g);
   st.ppcc = statistics::probability_plot_correlation(maxima, g);
   r.above_breaking_strength = inputs.mean_tension_n + st.dynamic_999_n > inputs.towline.breaking_strength_n();

@@ -77,7 +77,14 @@ struct CaseOptions {
   TensionLaw tension_law = TensionLaw::kPolynomial;
   bool second_order_forces = true;     // Newman slowly varying surge forces (thesis: on)
   seakeeping::ResponseOptions response;  // strip theory
-  int response_frequencies = 48;       // absolute-frequency grid of the transfer functions
+  // Absolute-frequency grid of the transfer functions: uniform on [lo, hi],
+  // independent of the sea so that responses are shared between cases
+  // (cached per vessel, speed, heading). 64 points resolve the Froude-Krylov
+  // surge force's oscillation with hull length (period dk = 2 pi / L, i.e.
+  // dw = g dk / 2w = 0.09 rad/s at w = 1.5 rad/s for the LHA 1).
+  int response_frequencies = 64;
+  double response_omega_min_rad_s = 0.2;   // below it these seas carry no energy
+  double response_omega_max_rad_s = 3.0;   // above it no ship of these sizes responds
   propulsion::TugPropellerDampingOptions tug_propeller;  // thesis 3.6
   propulsion::TowPropellerOptions tow_propeller = [] {
     propulsion::TowPropellerOptions o;
@@ -161,8 +168,19 @@ struct CaseResult {
 };
 
 // Runs the case. Throws InputError for bad inputs, NumericalError when a
-// solver fails.
+// solver fails. Strip-theory responses are memoised process-wide per
+// (vessel file, speed, heading, frequency grid, options), like towline fits.
 CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options = {});
+
+// Strip-theory responses of a vessel through the process-wide memo that
+// run_case uses (so callers such as the sweep's mean-tension calculator
+// share the work with the cases).
+std::shared_ptr<const std::vector<seakeeping::VesselResponse>> cached_responses(
+    const model::Vessel& vessel, double speed_m_s, double heading_rad, const std::vector<double>& omegas_rad_s,
+    const seakeeping::ResponseOptions& options);
+
+// The absolute-frequency grid of CaseOptions (uniform, response_frequencies points).
+std::vector<double> response_grid(const CaseOptions& options);
 
 // ---- For tests and tools -----------------------------------------------------
 

@@ -88,7 +88,7 @@ struct DayStatistics {
 //   double damping(double xi_m, double xi_dot_m_s) const;       // d tau / d xi' [N s/m]
 //   double mean_tension_n() const;                              // T (slack when tau <= -T)
 // Integrates one day; optional `trace` receives tau at the forcing samples:
-// trace[k] = tau at t = (k + 1) dt, k = 0 .. N - 1.
+// trace[k] = tau at t = k dt, k = 0 .. N - 1.
 template <typename TensionLaw>
 DayStatistics integrate_day(const SurgeParameters& p, const DayForcing& f, const TensionLaw& law,
                             const IntegratorOptions& options, std::vector<double>* trace = nullptr);
@@ -115,18 +115,15 @@ struct Forcing {
   double f1, f7, xi_ns, xi_ns_dot;
 };
 
+// Catmull-Rom at s = 1/2: (-y0 + 9 y1 + 9 y2 - y3) / 16.
+inline double midpoint(const std::vector<double>& y, std::size_t i) {
+  const std::size_t n = y.size();
+  return (9.0 * (y[i] + y[(i + 1) % n]) - y[(i + n - 1) % n] - y[(i + 2) % n]) * 0.0625;
+}
+
 inline Forcing forcing_at(const DayForcing& f, std::size_t i, double s) {
   return {interpolate(f.tug_force_n, i, s), interpolate(f.tow_force_n, i, s), interpolate(f.xi_ns_m, i, s),
           interpolate(f.xi_ns_dot_m_s, i, s)};
-}
-
-template <typename TensionLaw>
-inline State derivative(const SurgeParameters& p, const TensionLaw& law, const State& y, const Forcing& g) {
-  const double xi = y.x1 * p.cos_alpha_tug - y.x7 * p.cos_alpha_tow + g.xi_ns;
-  const double xi_dot = y.v1 * p.cos_alpha_tug - y.v7 * p.cos_alpha_tow + g.xi_ns_dot;
-  const double tau = law.tension(xi, xi_dot);
-  return {y.v1, (-tau * p.cos_alpha_tug + g.f1 - p.tug_damping_n_s_m * y.v1) / p.tug_mass_kg, y.v7,
-          (tau * p.cos_alpha_tow + g.f7 - p.tow_damping_n_s_m * y.v7) / p.tow_mass_kg};
 }
 
 inline State axpy(const State& y, double h, const State& k) {
@@ -157,11 +154,25 @@ DayStatistics integrate_day(const SurgeParameters& p, const DayForcing& f, const
   State y{0.0, 0.0, 0.0, 0.0};
   bool was_slack = false;
 
+  // Derivative of the state; also returns the tension it used.
+  const auto derivative = [&](const State& y0, const detail::Forcing& g, double* tau_out) {
+    const double xi = y0.x1 * p.cos_alpha_tug - y0.x7 * p.cos_alpha_tow + g.xi_ns;
+    const double xi_dot = y0.v1 * p.cos_alpha_tug - y0.v7 * p.cos_alpha_tow + g.xi_ns_dot;
+    const double tau = law.tension(xi, xi_dot);
+    *tau_out = tau;
+    return State{y0.v1, (-tau * p.cos_alpha_tug + g.f1 - p.tug_damping_n_s_m * y0.v1) / p.tug_mass_kg, y0.v7,
+                 (tau * p.cos_alpha_tow + g.f7 - p.tow_damping_n_s_m * y0.v7) / p.tow_mass_kg};
+  };
+  const auto sample = [&](std::size_t i) {
+    return detail::Forcing{f.tug_force_n[i], f.tow_force_n[i], f.xi_ns_m[i], f.xi_ns_dot_m_s[i]};
+  };
+
   for (std::size_t step = 0; step < total; ++step) {
     const std::size_t i = (start + step) % n;
+    const std::size_t i1 = (i + 1) % n;
     const bool recording = step >= warmup_samples;
     // Local stiffness and damping of the line at the start of the interval.
-    const detail::Forcing g0{f.tug_force_n[i], f.tow_force_n[i], f.xi_ns_m[i], f.xi_ns_dot_m_s[i]};
+    const detail::Forcing g0 = sample(i);
     const double xi = y.x1 * p.cos_alpha_tug - y.x7 * p.cos_alpha_tow + g0.xi_ns;
     const double xi_dot = y.v1 * p.cos_alpha_tug - y.v7 * p.cos_alpha_tow + g0.xi_ns_dot;
     const double k_loc = std::max(0.0, law.stiffness(xi, xi_dot));
@@ -174,37 +185,36 @@ DayStatistics integrate_day(const SurgeParameters& p, const DayForcing& f, const
     const double h = dt / m;
     detail::Forcing ga = g0;
     for (int j = 0; j < m; ++j) {
-      const double sm = (j + 0.5) / m;
-      const double s1 = static_cast<double>(j + 1) / m;
-      const detail::Forcing gm = detail::forcing_at(f, i, sm);
-      const detail::Forcing gb = detail::forcing_at(f, i, s1);
-      const State k1 = detail::derivative(p, law, y, ga);
-      const State k2 = detail::derivative(p, law, detail::axpy(y, 0.5 * h, k1), gm);
-      const State k3 = detail::derivative(p, law, detail::axpy(y, 0.5 * h, k2), gm);
-      const State k4 = detail::derivative(p, law, detail::axpy(y, h, k3), gb);
-      y.x1 += h / 6.0 * (k1.x1 + 2.0 * k2.x1 + 2.0 * k3.x1 + k4.x1);
-      y.v1 += h / 6.0 * (k1.v1 + 2.0 * k2.v1 + 2.0 * k3.v1 + k4.v1);
-      y.x7 += h / 6.0 * (k1.x7 + 2.0 * k2.x7 + 2.0 * k3.x7 + k4.x7);
-      y.v7 += h / 6.0 * (k1.v7 + 2.0 * k2.v7 + 2.0 * k3.v7 + k4.v7);
-      ga = gb;
+      const detail::Forcing gm = m == 1 ? detail::Forcing{detail::midpoint(f.tug_force_n, i), detail::midpoint(f.tow_force_n, i),
+                                                          detail::midpoint(f.xi_ns_m, i), detail::midpoint(f.xi_ns_dot_m_s, i)}
+                                        : detail::forcing_at(f, i, (j + 0.5) / m);
+      const detail::Forcing gb = j + 1 == m ? sample(i1) : detail::forcing_at(f, i, static_cast<double>(j + 1) / m);
+      double tau = 0.0, unused = 0.0;
+      const State k1 = derivative(y, ga, &tau);
       if (recording) {
-        // Statistics at every substep end, so snap-load peaks between samples count.
-        const double xi_b = y.x1 * p.cos_alpha_tug - y.x7 * p.cos_alpha_tow + gb.xi_ns;
-        const double xi_dot_b = y.v1 * p.cos_alpha_tug - y.v7 * p.cos_alpha_tow + gb.xi_ns_dot;
-        const double tau = law.tension(xi_b, xi_dot_b);
+        // Statistics at every substep start (the k1 evaluation), so snap-load
+        // peaks between forcing samples count; each point stands for h.
         const bool slack = tau <= -mean;
         stats.max_tension_n = std::max(stats.max_tension_n, tau);
         stats.min_tension_n = std::min(stats.min_tension_n, tau);
         if (slack) stats.slack_time_s += h;
         if (was_slack && !slack) ++stats.snatch_events;
         was_slack = slack;
-        if (j + 1 == m) {  // tau at sample i + 1
+        if (j == 0) {  // tau at sample i
           stats.tension_sum_n += tau;
           stats.tension_sum_sq_n2 += tau * tau;
           ++stats.samples;
           if (trace) (*trace)[step - warmup_samples] = tau;
         }
       }
+      const State k2 = derivative(detail::axpy(y, 0.5 * h, k1), gm, &unused);
+      const State k3 = derivative(detail::axpy(y, 0.5 * h, k2), gm, &unused);
+      const State k4 = derivative(detail::axpy(y, h, k3), gb, &unused);
+      y.x1 += h / 6.0 * (k1.x1 + 2.0 * k2.x1 + 2.0 * k3.x1 + k4.x1);
+      y.v1 += h / 6.0 * (k1.v1 + 2.0 * k2.v1 + 2.0 * k3.v1 + k4.v1);
+      y.x7 += h / 6.0 * (k1.x7 + 2.0 * k2.x7 + 2.0 * k3.x7 + k4.x7);
+      y.v7 += h / 6.0 * (k1.v7 + 2.0 * k2.v7 + 2.0 * k3.v7 + k4.v7);
+      ga = gb;
     }
     stats.substeps += m;
   }

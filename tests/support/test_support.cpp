@@ -11,6 +11,8 @@
 
 #include <sys/wait.h>
 
+#include "common/error.hpp"
+
 namespace towdb::test {
 
 namespace {
@@ -67,6 +69,15 @@ std::filesystem::path make_temp_dir(const std::string& prefix) {
     if (std::filesystem::create_directory(p)) return p;
   }
   throw std::runtime_error("cannot create a temporary directory");
+}
+
+void expect_input_error(const std::function<void()>& fn, const std::string& needle) {
+  try {
+    fn();
+    ADD_FAILURE() << "no InputError; expected one naming '" << needle << "'";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+  }
 }
 
 CommandResult run_towdb(const std::string& args, const std::string& stdin_text) {

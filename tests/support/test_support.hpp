@@ -5,6 +5,7 @@
 #define TOWDB_TESTS_SUPPORT_TEST_SUPPORT_HPP
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -29,6 +30,10 @@ std::filesystem::path shared_dir();
 std::filesystem::path towdb_exe();
 // A fresh, empty temporary directory for one test, removed by the caller.
 std::filesystem::path make_temp_dir(const std::string& prefix);
+
+// Runs fn and expects a towdb::InputError whose message contains `needle`
+// (the field name, usually); any other outcome is a test failure.
+void expect_input_error(const std::function<void()>& fn, const std::string& needle);
 
 struct CommandResult {
   int exit_code = -1;

@@ -14,16 +14,7 @@
 namespace towdb::propulsion {
 namespace {
 
-// Expects InputError whose message contains `field`.
-template <typename F>
-void expect_input_error(F&& f, const std::string& field) {
-  try {
-    f();
-    ADD_FAILURE() << "no InputError for " << field;
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
-  }
-}
+using test::expect_input_error;
 
 TEST(PropulsionOptions, DefaultsAreValidAndFollowTheThesis) {
   EXPECT_NO_THROW(HullDampingOptions{}.validate());

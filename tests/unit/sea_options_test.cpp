@@ -9,20 +9,12 @@
 
 #include "common/error.hpp"
 #include "sea/sea.hpp"
+#include "test_support.hpp"
 
 namespace towdb::sea {
 namespace {
 
-// Runs fn, expects InputError whose message contains `field`.
-template <typename Fn>
-void expect_input_error(Fn fn, const std::string& field) {
-  try {
-    fn();
-    ADD_FAILURE() << "no InputError for " << field;
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
-  }
-}
+using test::expect_input_error;
 
 const Spectrum& test_spectrum() {
   static const Spectrum s = Spectrum::pierson_moskowitz(12.0);

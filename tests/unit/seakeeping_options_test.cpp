@@ -13,16 +13,7 @@
 namespace towdb::seakeeping {
 namespace {
 
-// Expects InputError whose message names the field.
-template <typename F>
-void expect_input_error(F&& f, const std::string& field) {
-  try {
-    f();
-    ADD_FAILURE() << "no InputError for " << field;
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
-  }
-}
+using test::expect_input_error;
 
 TEST(SeakeepingOptions, SectionOptionsRejectBadValues) {
   SectionOptions o;

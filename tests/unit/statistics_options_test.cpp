@@ -8,19 +8,12 @@
 
 #include "common/error.hpp"
 #include "statistics/statistics.hpp"
+#include "test_support.hpp"
 
 namespace towdb::statistics {
 namespace {
 
-template <typename Fn>
-void expect_input_error(Fn fn, const std::string& field) {
-  try {
-    fn();
-    ADD_FAILURE() << "no InputError for " << field;
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
-  }
-}
+using test::expect_input_error;
 
 TEST(StatisticsOptions, SmallOrDegenerateSamplesAreNamedErrors) {
   const std::vector<double> two = {1.0, 2.0};

@@ -17,16 +17,7 @@
 namespace towdb::towline {
 namespace {
 
-// Expects InputError whose message contains `field`.
-template <typename F>
-void expect_input_error(F&& f, const std::string& field) {
-  try {
-    f();
-    ADD_FAILURE() << "no InputError for " << field;
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
-  }
-}
+using test::expect_input_error;
 
 TEST(TowlineOptions, DefaultsAreValid) {
   EXPECT_NO_THROW(CatenaryOptions{}.validate());

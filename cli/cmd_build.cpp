@@ -1,0 +1,319 @@
+// towdb build | status | sweep calibration: the database generator.
+//   build   computes every case of a sweep file into a database (parallel,
+//           resumable, incremental; generator/sweep/build.hpp)
+//   status  summarises a database (builds, cases by status, failures)
+//   sweep calibration  writes the Appendix C calibration sweep from its CSV
+#include <atomic>
+#include <csignal>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli.hpp"
+#include "common/error.hpp"
+#include "common/parallel_for.hpp"
+#include "output.hpp"
+#include "sweep/calibration.hpp"
+#include "sweep/simulation_runner.hpp"
+#include "sweep/sweep.hpp"
+
+namespace towdb::cli {
+
+namespace {
+
+using nlohmann::ordered_json;
+
+// Set by SIGINT/SIGTERM: stop starting cases, finish the running ones.
+std::atomic<bool> g_stop{false};
+
+extern "C" void on_stop_signal(int signal_number) {
+  g_stop.store(true);
+  std::signal(signal_number, SIG_DFL);  // a second signal ends the process at once
+}
+
+struct BuildArgs {
+  std::string sweep;
+  std::string db;
+  int threads = 0;
+  bool dry_run = false;
+  bool resume = false;
+  bool retry_failed = false;
+  bool json = false;
+};
+
+std::string quoted(const std::string& s) {
+  return s.find_first_of(" \t'\"") == std::string::npos ? s : "'" + s + "'";
+}
+
+std::string command_line(const Context& ctx, const BuildArgs& a) {
+  std::string c = "towdb";
+  if (!ctx.ships_dir.empty()) c += " --ships-dir " + quoted(ctx.ships_dir);
+  c += " build --sweep " + quoted(a.sweep) + " --db " + quoted(a.db);
+  if (a.threads > 0) c += " --threads " + std::to_string(a.threads);
+  if (a.resume) c += " --resume";
+  if (a.retry_failed) c += " --retry-failed";
+  return c;
+}
+
+std::string line_name(model::LineKind k) { return model::to_string(k); }
+
+ordered_json case_json(const sweep::PlannedCase& p) {
+  const sweep::CaseSpec& s = p.spec;
+  ordered_json j;
+  j["sweep_label"] = s.sweep_label;
+  j["tug"] = s.tug;
+  j["tow"] = s.tow;
+  j["speed_kt"] = s.speed_kt;
+  j["nominal_speed_kt"] = s.nominal_speed_kt;
+  j["spectrum"] = s.sea.spectrum_text();
+  if (s.sea.wind_kt) j["wind_kt"] = *s.sea.wind_kt;
+  if (s.sea.hs_ft) j["hs_ft"] = *s.sea.hs_ft;
+  if (s.sea.tp_s) j["tp_s"] = *s.sea.tp_s;
+  if (s.sea.gamma) j["gamma"] = *s.sea.gamma;
+  if (s.sea.swell) {
+    j["swell_hs_ft"] = s.sea.swell->hs_ft;
+    j["swell_tp_s"] = s.sea.swell->tp_s;
+    j["swell_heading_deg"] = s.sea.swell->heading_deg;
+  }
+  j["heading_deg"] = s.heading_deg;
+  j["line"] = line_name(s.line);
+  j["length_ft"] = s.length_ft;
+  j["mean_tension_lbf"] = s.mean_tension_lbf;
+  j["mean_tension_label"] = s.mean_tension_label;
+  j["days"] = s.days;
+  j["seed"] = s.seed;
+  j["case_key"] = p.keys.case_key;
+  j["state"] = sweep::to_string(p.state);
+  return j;
+}
+
+int run_dry(const Context& ctx, const BuildArgs& a, const sweep::SweepFile& file, const sweep::SweepExpansion& exp,
+            const io::ShipCatalog& catalog) {
+  (void)ctx;
+  std::optional<std::filesystem::path> db;
+  if (!a.db.empty()) db = a.db;
+  const std::vector<sweep::PlannedCase> plan = sweep::plan_build(db, exp.cases, catalog, kVersion);
+  std::map<std::string, int> by_state;
+  int to_compute = 0;
+  for (const auto& p : plan) {
+    ++by_state[sweep::to_string(p.state)];
+    if (p.state != sweep::CaseState::kDone && p.state != sweep::CaseState::kFailed) ++to_compute;
+  }
+  if (a.json) {
+    ordered_json j;
+    j["sweep_file"] = file.path;
+    j["cases"] = plan.size();
+    j["to_compute"] = to_compute;
+    j["by_state"] = by_state;
+    j["case_list"] = ordered_json::array();
+    for (const auto& p : plan) j["case_list"].push_back(case_json(p));
+    j["skipped_conditions"] = ordered_json::array();
+    for (const auto& s : exp.skipped) {
+      j["skipped_conditions"].push_back({{"sweep_label", s.sweep_label}, {"tug", s.tug}, {"tow", s.tow},
+                                         {"nominal_speed_kt", s.nominal_speed_kt}, {"sea", s.sea},
+                                         {"heading_deg", s.heading_deg},
+                                         {"reason", s.reason}});
+    }
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  TextTable t({"#", "label", "tug", "tow", "kt", "sea", "heading deg", "line", "length ft", "mean lbf",
+               "tension label", "days", "state"});
+  int n = 0;
+  for (const auto& p : plan) {
+    const sweep::CaseSpec& s = p.spec;
+    std::string speed = fmt(s.speed_kt);
+    if (s.speed_kt != s.nominal_speed_kt) speed += " (" + fmt(s.nominal_speed_kt) + ")";
+    t.add_row({std::to_string(++n), s.sweep_label, s.tug, s.tow, speed, sweep::sea_text(s.sea), fmt(s.heading_deg),
+               line_name(s.line), fmt(s.length_ft), fmt_grouped(s.mean_tension_lbf), s.mean_tension_label,
+               std::to_string(s.days), sweep::to_string(p.state)});
+  }
+  t.print(std::cout);
+  for (const auto& s : exp.skipped) {
+    std::cout << "skipped: " << s.sweep_label << " " << s.tug << " / " << s.tow << " at " << fmt(s.nominal_speed_kt)
+              << " kt, " << s.sea << ", heading " << fmt(s.heading_deg) << " deg: " << s.reason << "\n";
+  }
+  std::cout << plan.size() << " cases (" << to_compute << " to compute";
+  for (const auto& [state, count] : by_state) std::cout << ", " << count << " " << state;
+  std::cout << "); " << exp.skipped.size() << " conditions skipped\n";
+  return 0;
+}
+
+// The physics options of a database build: the case options of the runner
+// registered in main() (one thread per case: the build runs cases in parallel).
+simulation::CaseOptions build_case_options() {
+  simulation::CaseOptions o;
+  o.num_threads = 1;
+  return o;
+}
+
+sweep::ExpandOptions expand_options() {
+  sweep::ExpandOptions e;
+  e.sea_resistance = sweep::strip_theory_sea_resistance(build_case_options());
+  return e;
+}
+
+int run_build_command(const Context& ctx, const BuildArgs& a) {
+  const sweep::SweepFile file = sweep::load_sweep(a.sweep);
+  const io::ShipCatalog catalog = load_catalog(ctx);
+  const sweep::SweepExpansion exp = sweep::expand_sweep(file, catalog, expand_options());
+  if (a.dry_run) return run_dry(ctx, a, file, exp, catalog);
+  if (a.db.empty()) throw InputError("build: --db FILE is required (except with --dry-run)");
+  const sweep::CaseRunner* runner = sweep::default_case_runner();
+  if (!runner) {
+    throw InputError(
+        "build: no case runner is registered in this towdb (the simulation chain is not yet wired into `towdb "
+        "build`: sweep::set_default_case_runner); nothing was written. Use --dry-run to list the cases.");
+  }
+  sweep::distributed::Session session;
+  sweep::BuildOptions o;
+  o.threads = a.threads > 0 ? a.threads : max_threads();
+  o.resume = a.resume;
+  o.retry_failed = a.retry_failed;
+  o.command_line = command_line(ctx, a);
+  o.stop = &g_stop;
+  o.session = &session;
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+  const sweep::BuildSummary s = sweep::run_build(a.db, file, exp.cases, catalog, *runner, o);
+  if (s.worker) return 0;
+  for (const auto& f : s.failures) std::cerr << "towdb: case failed: " << f << "\n";
+  for (const auto& k : exp.skipped) {
+    std::cerr << "towdb: condition skipped: " << k.sweep_label << " " << k.tug << " / " << k.tow << " at "
+              << fmt(k.nominal_speed_kt) << " kt, " << k.sea << ", heading " << fmt(k.heading_deg)
+              << " deg: " << k.reason << "\n";
+  }
+  std::cout << "build " << s.build_id << ": " << s.total << " cases; " << s.up_to_date << " up to date, "
+            << s.scheduled << " scheduled, " << s.done << " done, " << s.failed << " failed";
+  if (s.previously_failed > 0) std::cout << ", " << s.previously_failed << " failed earlier (--retry-failed)";
+  std::cout << (s.interrupted ? "; interrupted (run again with the same command to continue)" : "") << "\n";
+  return (s.failed > 0 || s.interrupted) ? 1 : 0;
+}
+
+int run_status(const std::string& db, bool json) {
+  const sweep::StatusReport r = sweep::read_status(db);
+  if (json) {
+    ordered_json j;
+    j["database"] = db;
+    j["schema_version"] = r.schema_version;
+    j["cases"] = r.cases;
+    j["cases_by_status"] = r.cases_by_status;
+    j["cases_by_sweep_label"] = r.cases_by_sweep_label;
+    j["results"] = r.results;
+    j["daily_maxima"] = r.daily_maxima;
+    j["towline_fits"] = r.towline_fits;
+    j["vessels"] = r.vessels;
+    if (r.total_runtime_s) j["total_runtime_s"] = *r.total_runtime_s;
+    j["builds"] = ordered_json::array();
+    for (const auto& b : r.builds) {
+      j["builds"].push_back({{"build_id", b.build_id}, {"status", b.status}, {"code_version", b.code_version},
+                             {"sweep_file", b.sweep_file}, {"host", b.host}, {"threads", b.threads},
+                             {"mpi_ranks", b.mpi_ranks}, {"started_utc", b.started_utc},
+                             {"finished_utc", b.finished_utc}, {"cases_done", b.cases_done},
+                             {"cases_failed", b.cases_failed}});
+    }
+    j["failed_cases"] = ordered_json::array();
+    for (const auto& f : r.failed) {
+      j["failed_cases"].push_back({{"case_id", f.case_id}, {"sweep_label", f.sweep_label}, {"tug", f.tug},
+                                   {"tow", f.tow}, {"error_message", f.error_message}});
+    }
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  std::cout << db << ": towdb database, schema version " << r.schema_version << "\n"
+            << "cases: " << r.cases;
+  for (const auto& [status, n] : r.cases_by_status) std::cout << ", " << n << " " << status;
+  std::cout << "\nresults: " << r.results << ", daily maxima: " << r.daily_maxima
+            << ", towline fits: " << r.towline_fits << ", vessels: " << r.vessels;
+  if (r.total_runtime_s) std::cout << ", computing time: " << fmt(*r.total_runtime_s / 3600.0, 2) << " h";
+  std::cout << "\n\nsweep labels\n";
+  TextTable labels({"sweep label", "cases"});
+  for (const auto& [label, n] : r.cases_by_sweep_label) labels.add_row({label, std::to_string(n)});
+  labels.print(std::cout);
+  std::cout << "\nbuilds (newest first)\n";
+  TextTable builds({"build", "status", "started (UTC)", "finished (UTC)", "threads", "ranks", "done", "failed",
+                    "version", "sweep"});
+  for (const auto& b : r.builds) {
+    builds.add_row({std::to_string(b.build_id), b.status, b.started_utc, b.finished_utc, std::to_string(b.threads),
+                    std::to_string(b.mpi_ranks), std::to_string(b.cases_done), std::to_string(b.cases_failed),
+                    b.code_version, b.sweep_file});
+  }
+  builds.print(std::cout);
+  if (!r.failed.empty()) {
+    std::cout << "\nfailed cases\n";
+    TextTable failed({"case", "label", "tug", "tow", "reason"});
+    for (const auto& f : r.failed) {
+      failed.add_row({std::to_string(f.case_id), f.sweep_label, f.tug, f.tow, f.error_message});
+    }
+    failed.print(std::cout);
+  }
+  return 0;
+}
+
+int run_calibration(const Context& ctx, const std::string& csv, const std::string& out) {
+  std::ifstream in(csv, std::ios::binary);
+  if (!in) throw InputError(csv + ": cannot open the CSV file (missing or unreadable)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const io::ShipCatalog catalog = load_catalog(ctx);
+  const auto rows = sweep::parse_calibration_csv(text.str(), csv, catalog);
+  const std::string toml = sweep::calibration_sweep_toml(rows, std::filesystem::path(csv).filename().string());
+  // The result must read back as a valid sweep whose cases all resolve.
+  const sweep::SweepFile check = sweep::parse_sweep(toml, out.empty() ? "<generated>" : out);
+  sweep::expand_sweep(check, catalog, expand_options());
+  if (out.empty()) {
+    std::cout << toml;
+  } else {
+    std::ofstream os(out, std::ios::binary);
+    if (!os) throw InputError(out + ": cannot write the sweep file");
+    os << toml;
+    std::cerr << "wrote " << rows.size() << " cases to " << out << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+void register_case_runner() { sweep::set_default_case_runner(sweep::simulation_case_runner(build_case_options())); }
+
+void add_build_command(CLI::App& app, Context& ctx) {
+  auto a = std::make_shared<BuildArgs>();
+  CLI::App* build = app.add_subcommand("build", "Compute every case of a sweep file into a towdb database");
+  build->add_option("--sweep", a->sweep, "Sweep file (TOML, docs/sweep-files.md)")->required();
+  build->add_option("--db", a->db, "Database file (created if missing; updated incrementally)");
+  build->add_option("--threads", a->threads, "OpenMP threads computing cases (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  build->add_flag("--dry-run", a->dry_run, "List the cases and their count; write nothing");
+  build->add_flag("--resume", a->resume, "Continue after a build that was killed or crashed");
+  build->add_flag("--retry-failed", a->retry_failed, "Recompute cases that failed in an earlier build");
+  build->add_flag("--json", a->json, "JSON output (with --dry-run)");
+  build->callback([&ctx, a] { ctx.action = [&ctx, a] { return run_build_command(ctx, *a); }; });
+
+  struct StatusArgs {
+    std::string db;
+    bool json = false;
+  };
+  auto s = std::make_shared<StatusArgs>();
+  CLI::App* status = app.add_subcommand("status", "Summarise a towdb database: builds, cases, failures");
+  status->add_option("--db", s->db, "Database file")->required();
+  status->add_flag("--json", s->json, "JSON output");
+  status->callback([&ctx, s] { ctx.action = [s] { return run_status(s->db, s->json); }; });
+
+  struct CalibrationArgs {
+    std::string csv;
+    std::string out;
+  };
+  auto c = std::make_shared<CalibrationArgs>();
+  CLI::App* sweep_cmd = app.add_subcommand("sweep", "Generate sweep files");
+  sweep_cmd->require_subcommand(1);
+  CLI::App* calibration = sweep_cmd->add_subcommand(
+      "calibration", "Write the sweep of the thesis's Appendix C calibration cases from its CSV");
+  calibration->add_option("--csv", c->csv, "appendix_c_calibration.csv")->required();
+  calibration->add_option("--out", c->out, "Output sweep file (default: standard output)");
+  calibration->callback([&ctx, c] { ctx.action = [&ctx, c] { return run_calibration(ctx, c->csv, c->out); }; });
+}
+
+}  // namespace towdb::cli

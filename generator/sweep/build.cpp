@@ -1,0 +1,501 @@
+#include "sweep/build.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <utility>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "common/error.hpp"
+#include "common/parallel_for.hpp"
+#include "store/database.hpp"
+#include "sweep/progress.hpp"
+#include "sweep/serialize.hpp"
+
+namespace towdb::sweep {
+
+namespace {
+
+constexpr int kMaxThreads = 1024;
+
+// ---------------------------------------------------------------------------
+// One computed case, handed from a worker to the writer.
+struct CaseEvent {
+  enum class Kind { kStarted, kFinished };
+  Kind kind = Kind::kFinished;
+  std::size_t work = 0;  // index into the work list
+  bool ok = false;
+  CaseOutcome outcome;
+  std::string error;
+  double runtime_s = 0.0;
+};
+
+// Runs the runner on one case and never throws: a failure becomes the
+// event's error text, prefixed by its kind.
+CaseEvent run_one(std::size_t work, const CaseSpec& spec, const io::ShipCatalog& catalog, const CaseRunner& runner) {
+  CaseEvent e;
+  e.work = work;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    e.outcome = runner(spec, catalog);
+    e.outcome.validate();
+    if (static_cast<int>(e.outcome.days.size()) != spec.days) {
+      throw NumericalError("case runner returned " + std::to_string(e.outcome.days.size()) +
+                           " daily maxima, expected days = " + std::to_string(spec.days));
+    }
+    e.ok = true;
+  } catch (const InputError& x) {
+    e.error = std::string("input error: ") + x.what();
+  } catch (const NumericalError& x) {
+    e.error = std::string("numerical error: ") + x.what();
+  } catch (const std::exception& x) {
+    e.error = std::string("error: ") + x.what();
+  } catch (...) {
+    e.error = "error: unknown exception";
+  }
+  if (!e.ok) e.outcome = CaseOutcome{};
+  e.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return e;
+}
+
+// Worker threads push, the one writer thread pops.
+class EventQueue {
+ public:
+  void push(CaseEvent e) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      events_.push_back(std::move(e));
+    }
+    ready_.notify_one();
+  }
+  void close() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      closed_ = true;
+    }
+    ready_.notify_all();
+  }
+  // False when closed and empty.
+  bool pop(CaseEvent* out) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    ready_.wait(lock, [&] { return closed_ || !events_.empty(); });
+    if (events_.empty()) return false;
+    *out = std::move(events_.front());
+    events_.pop_front();
+    return true;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable ready_;
+  std::deque<CaseEvent> events_;
+  bool closed_ = false;
+};
+
+// An exclusive advisory lock (flock) on the database file for the whole
+// build: a second `towdb build` on the same file is refused at once. flock
+// locks are independent of SQLite's POSIX record locks on Linux; the
+// descriptor is closed only after the database connection (declared after
+// this object, destroyed before it), so SQLite's locks are never dropped by
+// our close().
+class BuildLock {
+ public:
+  explicit BuildLock(const std::filesystem::path& path) : path_(path) {
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw InputError(path.string() + ": cannot open the database file for writing");
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      ::close(fd_);
+      fd_ = -1;
+      throw InputError(path.string() + ": another towdb build is writing to this database (it holds the build lock)");
+    }
+  }
+  ~BuildLock() {
+    if (fd_ >= 0) ::close(fd_);  // releases the flock
+  }
+  BuildLock(const BuildLock&) = delete;
+  BuildLock& operator=(const BuildLock&) = delete;
+
+ private:
+  std::filesystem::path path_;
+  int fd_ = -1;
+};
+
+// A database file without any write permission bit is treated as read-only
+// even for root (who could write it anyway): its owner marked it so.
+void require_writable(const std::filesystem::path& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    if (!std::filesystem::is_directory(dir)) {
+      throw InputError(path.string() + ": the directory " + dir.string() + " does not exist");
+    }
+    return;  // a new database
+  }
+  if (S_ISDIR(st.st_mode)) throw InputError(path.string() + ": is a directory, not a database file");
+  if ((st.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0) {
+    char mode[8];
+    std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(st.st_mode & 07777));
+    throw InputError(path.string() + ": the database file is read-only (mode " + mode +
+                     "); make it writable (chmod u+w) to build into it");
+  }
+}
+
+std::string host_name() {
+  char buffer[256] = {};
+  if (::gethostname(buffer, sizeof buffer - 1) != 0) return "unknown";
+  return buffer;
+}
+
+// Applies events to the database (the writer's side) and keeps the counts.
+class Recorder {
+ public:
+  Recorder(DatabaseWriter& writer, const std::vector<CaseSpec>& cases, const std::vector<CaseKeys>& keys,
+           const std::vector<std::size_t>& work, const std::vector<RegisteredCase>& registered,
+           const BuildOptions& options, std::int64_t build_id, BuildSummary& summary)
+      : writer_(writer),
+        cases_(cases),
+        keys_(keys),
+        work_(work),
+        registered_(registered),
+        options_(options),
+        build_id_(build_id),
+        summary_(summary),
+        progress_(static_cast<int>(work.size()), options.progress) {}
+
+  void apply(const CaseEvent& e) {
+    const std::size_t i = work_[e.work];
+    const std::int64_t case_id = registered_[i].case_id;
+    if (e.kind == CaseEvent::Kind::kStarted) {
+      writer_.mark_running(case_id, build_id_);
+      return;
+    }
+    if (e.ok) {
+      writer_.write_result(case_id, cases_[i], keys_[i], e.outcome, e.runtime_s, options_.code_version, build_id_);
+      ++summary_.done;
+    } else {
+      writer_.write_failure(case_id, e.error, build_id_);
+      ++summary_.failed;
+      summary_.failures.push_back("case_id " + std::to_string(case_id) + " (" + cases_[i].sweep_label + ", " +
+                                  cases_[i].tug + " / " + cases_[i].tow + "): " + e.error);
+    }
+    progress_.update(summary_.done, summary_.failed);
+  }
+
+  void finish() { progress_.finish(summary_.done, summary_.failed); }
+
+ private:
+  DatabaseWriter& writer_;
+  const std::vector<CaseSpec>& cases_;
+  const std::vector<CaseKeys>& keys_;
+  const std::vector<std::size_t>& work_;
+  const std::vector<RegisteredCase>& registered_;
+  const BuildOptions& options_;
+  std::int64_t build_id_;
+  BuildSummary& summary_;
+  ProgressBar progress_;
+};
+
+bool stop_requested(const BuildOptions& o) { return o.stop && o.stop->load(); }
+
+// ---------------------------------------------------------------------------
+// One process: OpenMP workers, one writer thread.
+void run_threads(const std::vector<CaseSpec>& cases, const std::vector<std::size_t>& work,
+                 const io::ShipCatalog& catalog, const CaseRunner& runner, const BuildOptions& options,
+                 Recorder& recorder, BuildSummary& summary) {
+  EventQueue queue;
+  std::atomic<bool> writer_failed{false};
+  std::exception_ptr writer_error;
+  std::thread writer([&] {
+    CaseEvent e;
+    while (queue.pop(&e)) {
+      if (writer_failed.load()) continue;  // drain without writing
+      try {
+        recorder.apply(e);
+      } catch (...) {
+        writer_error = std::current_exception();
+        writer_failed.store(true);
+      }
+    }
+  });
+  std::atomic<int> skipped{0};
+  parallel_for(0, static_cast<std::int64_t>(work.size()), options.threads, [&](std::int64_t w) {
+    const auto wi = static_cast<std::size_t>(w);
+    if (stop_requested(options) || writer_failed.load()) {
+      ++skipped;
+      return;
+    }
+    CaseEvent started;
+    started.kind = CaseEvent::Kind::kStarted;
+    started.work = wi;
+    queue.push(std::move(started));
+    queue.push(run_one(wi, cases[work[wi]], catalog, runner));
+  });
+  queue.close();
+  writer.join();
+  if (writer_error) std::rethrow_exception(writer_error);
+  summary.interrupted = skipped.load() > 0;
+}
+
+// ---------------------------------------------------------------------------
+// MPI: rank 0 dispatches and writes; ranks 1.. compute (dynamic scheduling).
+Bytes encode_work(std::size_t work, const CaseSpec& spec, const CaseKeys& keys, const std::string& code_version) {
+  ByteWriter w;
+  w.i64(static_cast<std::int64_t>(work));
+  w.str(keys.inputs_sha256);
+  w.str(code_version);
+  write_spec(w, spec);
+  return w.take();
+}
+
+Bytes encode_result(const CaseEvent& e) {
+  ByteWriter w;
+  w.i64(static_cast<std::int64_t>(e.work));
+  w.u8(e.ok ? 1 : 0);
+  w.f64(e.runtime_s);
+  if (e.ok) {
+    write_outcome(w, e.outcome);
+  } else {
+    w.str(e.error);
+  }
+  return w.take();
+}
+
+CaseEvent decode_result(const Bytes& bytes) {
+  ByteReader r(bytes);
+  CaseEvent e;
+  e.work = static_cast<std::size_t>(r.i64());
+  e.ok = r.u8() != 0;
+  e.runtime_s = r.f64();
+  if (e.ok) {
+    e.outcome = read_outcome(r);
+  } else {
+    e.error = r.str();
+  }
+  return e;
+}
+
+void run_coordinator(const std::vector<CaseSpec>& cases, const std::vector<CaseKeys>& keys,
+                     const std::vector<std::size_t>& work, const BuildOptions& options, int ranks,
+                     Recorder& recorder, BuildSummary& summary) {
+  std::size_t next = 0;
+  int active = ranks - 1;
+  std::exception_ptr writer_error;
+  while (active > 0) {
+    distributed::Message m = distributed::receive(-1);
+    if (m.tag == distributed::Tag::kResult && !writer_error) {
+      try {
+        recorder.apply(decode_result(m.bytes));
+      } catch (...) {
+        writer_error = std::current_exception();
+      }
+    }
+    if (next < work.size() && !stop_requested(options) && !writer_error) {
+      const std::size_t i = work[next];
+      distributed::send(m.source, distributed::Tag::kWork, encode_work(next, cases[i], keys[i], options.code_version));
+      CaseEvent started;
+      started.kind = CaseEvent::Kind::kStarted;
+      started.work = next;
+      if (!writer_error) {
+        try {
+          recorder.apply(started);
+        } catch (...) {
+          writer_error = std::current_exception();
+        }
+      }
+      ++next;
+    } else {
+      distributed::send(m.source, distributed::Tag::kStop, {});
+      --active;
+    }
+  }
+  if (writer_error) std::rethrow_exception(writer_error);
+  summary.interrupted = next < work.size();
+}
+
+void run_worker(const io::ShipCatalog& catalog, const CaseRunner& runner, int rank) {
+  distributed::send(0, distributed::Tag::kReady, {});
+  for (;;) {
+    distributed::Message m = distributed::receive(0);
+    if (m.tag == distributed::Tag::kStop) return;
+    ByteReader r(m.bytes);
+    const auto work = static_cast<std::size_t>(r.i64());
+    const std::string inputs_sha256 = r.str();
+    const std::string code_version = r.str();
+    const CaseSpec spec = read_spec(r);
+    CaseEvent e;
+    // The ship files this rank reads must be the ones rank 0 hashed.
+    std::string mismatch;
+    try {
+      if (case_keys(spec, catalog, code_version).inputs_sha256 != inputs_sha256) {
+        mismatch = "MPI rank " + std::to_string(rank) +
+                   ": its ship or towline files differ from rank 0's (inputs_sha256 mismatch)";
+      }
+    } catch (const std::exception& x) {
+      mismatch = "MPI rank " + std::to_string(rank) + ": " + x.what();
+    }
+    if (mismatch.empty()) {
+      e = run_one(work, spec, catalog, runner);
+    } else {
+      e.work = work;
+      e.error = "input error: " + mismatch;
+    }
+    distributed::send(0, distributed::Tag::kResult, encode_result(e));
+  }
+}
+
+}  // namespace
+
+void BuildOptions::validate() const {
+  require_input(threads >= 1 && threads <= kMaxThreads, "BuildOptions.threads", threads,
+                "must be a whole number in [1, 1024]");
+  require_input(!code_version.empty(), "BuildOptions.code_version", 0.0, "must not be empty");
+}
+
+std::vector<CaseKeys> compute_keys(const std::vector<CaseSpec>& cases, const io::ShipCatalog& catalog,
+                                   const std::string& code_version) {
+  std::vector<CaseKeys> keys;
+  keys.reserve(cases.size());
+  for (const CaseSpec& s : cases) {
+    s.validate();
+    keys.push_back(case_keys(s, catalog, code_version));
+  }
+  return keys;
+}
+
+std::vector<PlannedCase> plan_build(const std::optional<std::filesystem::path>& db_path,
+                                    const std::vector<CaseSpec>& cases, const io::ShipCatalog& catalog,
+                                    const std::string& code_version) {
+  const std::vector<CaseKeys> keys = compute_keys(cases, catalog, code_version);
+  std::vector<PlannedCase> plan(cases.size());
+  for (std::size_t i = 0; i < cases.size(); ++i) plan[i] = {cases[i], keys[i], CaseState::kNew};
+  if (!db_path || !std::filesystem::exists(*db_path)) return plan;
+  store::Database db = store::Database::open(*db_path, store::Database::Mode::kReadOnly);
+  store::Statement by_key = db.prepare("SELECT status FROM cases WHERE case_key = ?");
+  store::Statement by_condition = db.prepare("SELECT 1 FROM cases WHERE condition_key = ?");
+  for (PlannedCase& p : plan) {
+    by_key.bind(1, p.keys.case_key);
+    if (by_key.step()) {
+      const std::string status = by_key.column_text(0);
+      p.state = status == "done" ? CaseState::kDone : status == "failed" ? CaseState::kFailed : CaseState::kUnfinished;
+    } else {
+      by_condition.bind(1, p.spec.condition_key);
+      if (by_condition.step()) p.state = CaseState::kChanged;
+      by_condition.reset();
+    }
+    by_key.reset();
+  }
+  return plan;
+}
+
+BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sweep,
+                       const std::vector<CaseSpec>& cases, const io::ShipCatalog& catalog, const CaseRunner& runner,
+                       const BuildOptions& options) {
+  options.validate();
+  if (!runner) throw InputError("build: no case runner was given");
+  BuildSummary summary;
+  const int ranks = options.session ? options.session->size() : 1;
+  const int rank = options.session ? options.session->rank() : 0;
+  if (rank != 0) {
+    summary.worker = true;
+    try {
+      run_worker(catalog, runner, rank);
+    } catch (const std::exception& e) {
+      // Rank 0 would wait for this rank forever: end every rank.
+      std::fprintf(stderr, "towdb: MPI rank %d: %s\n", rank, e.what());
+      distributed::abort_all(1);
+    }
+    return summary;
+  }
+
+  // Everything that can be checked without the database first.
+  std::vector<CaseKeys> keys;
+  auto stop_workers = [&] {
+    for (int r = 1; r < ranks; ++r) distributed::send(r, distributed::Tag::kStop, {});
+  };
+  try {
+    keys = compute_keys(cases, catalog, options.code_version);
+    require_writable(db_path);
+  } catch (...) {
+    stop_workers();
+    throw;
+  }
+
+  std::optional<BuildLock> lock;
+  std::optional<store::Database> db;
+  std::optional<DatabaseWriter> writer;
+  std::vector<RegisteredCase> registered;
+  std::vector<std::size_t> work;
+  try {
+    lock.emplace(db_path);
+    db.emplace(store::Database::open(db_path, store::Database::Mode::kCreate));
+    writer.emplace(*db);
+    const std::vector<std::int64_t> unfinished = writer->unfinished_builds();
+    if (!unfinished.empty()) {
+      if (!options.resume) {
+        throw InputError(db_path.string() + ": build " + std::to_string(unfinished.back()) +
+                         " did not finish (killed or crashed); run again with --resume to continue it (done cases "
+                         "are kept, unfinished ones are recomputed)");
+      }
+      writer->mark_interrupted(unfinished);
+    }
+    BuildProvenance p;
+    p.code_version = options.code_version;
+    p.command_line = options.command_line;
+    p.sweep_file = sweep.path;
+    p.sweep_sha256 = sweep.sha256;
+    p.host = host_name();
+    p.threads = options.threads;
+    p.mpi_ranks = ranks;
+    summary.build_id = writer->begin_build(p);
+  } catch (...) {
+    stop_workers();
+    throw;
+  }
+
+  try {
+    registered = writer->register_cases(cases, keys, catalog, summary.build_id, options.retry_failed);
+    summary.total = static_cast<int>(cases.size());
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      switch (registered[i].state) {
+        case CaseState::kDone: ++summary.up_to_date; break;
+        case CaseState::kFailed:
+          if (options.retry_failed) {
+            work.push_back(i);
+          } else {
+            ++summary.previously_failed;
+          }
+          break;
+        default: work.push_back(i); break;
+      }
+    }
+    summary.scheduled = static_cast<int>(work.size());
+    Recorder recorder(*writer, cases, keys, work, registered, options, summary.build_id, summary);
+    if (ranks > 1) {
+      run_coordinator(cases, keys, work, options, ranks, recorder, summary);
+    } else {
+      run_threads(cases, work, catalog, runner, options, recorder, summary);
+    }
+    recorder.finish();
+  } catch (...) {
+    if (ranks > 1 && registered.empty()) stop_workers();
+    try {
+      writer->finish_build(summary.build_id, "failed", summary.done, summary.failed);
+    } catch (...) {
+      // The original error matters more than a failed status update.
+    }
+    throw;
+  }
+  writer->finish_build(summary.build_id, summary.interrupted ? "interrupted" : "completed", summary.done,
+                       summary.failed);
+  return summary;
+}
+
+}  // namespace towdb::sweep

@@ -1,0 +1,97 @@
+// `towdb build`: computes every case of a sweep into a towdb database.
+//
+//   - OpenMP over cases (towdb::parallel_for), or MPI ranks (rank 0 writes,
+//     the others compute; dynamic scheduling), see distributed.hpp;
+//   - ONE writer: results are handed from the workers to a single writer
+//     thread through a queue; each case is committed in its own transaction
+//     (WAL: a reader never sees half a case);
+//   - deterministic: the same rows and bit-identical REAL values for any
+//     thread or rank count (EQ-SWEEP-7 in sweep.hpp);
+//   - incremental and resumable: a case is skipped when its case_key
+//     (EQ-SWEEP-6) is already 'done'; pending or running cases (a killed
+//     build) are recomputed; a changed sweep cell is replaced in place;
+//   - a failed case is stored with its reason (status 'failed').
+#ifndef TOWDB_SWEEP_BUILD_HPP
+#define TOWDB_SWEEP_BUILD_HPP
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/version.hpp"
+#include "io/ship_file.hpp"
+#include "sweep/case.hpp"
+#include "sweep/distributed.hpp"
+#include "sweep/keys.hpp"
+#include "sweep/sweep_file.hpp"
+#include "sweep/writer.hpp"
+
+namespace towdb::sweep {
+
+struct BuildOptions {
+  // OpenMP threads computing cases in this process (>= 1).
+  int threads = 1;
+  // Continue after a build that did not finish (killed, crashed): without it
+  // such a database is refused, so an accident is never silently resumed.
+  bool resume = false;
+  // Recompute cases that failed in an earlier build (default: keep them).
+  bool retry_failed = false;
+  // Enters every case_key: a new version recomputes everything.
+  std::string code_version = kVersion;
+  // Provenance: the command that ran (builds.command_line).
+  std::string command_line;
+  // Progress bar on stderr (only drawn when stderr is a terminal).
+  bool progress = true;
+  // Set asynchronously (e.g. by SIGINT) to stop starting cases; the build
+  // then ends 'interrupted' with the unstarted cases still pending.
+  const std::atomic<bool>* stop = nullptr;
+  // MPI session; nullptr (or size 1) = one process.
+  const distributed::Session* session = nullptr;
+
+  // Throws InputError naming the field: threads in [1, 1024].
+  void validate() const;
+};
+
+struct BuildSummary {
+  std::int64_t build_id = 0;
+  int total = 0;              // cases in the sweep
+  int up_to_date = 0;         // already done: skipped
+  int previously_failed = 0;  // failed in an earlier build and not retried
+  int scheduled = 0;          // to compute in this run
+  int done = 0;               // computed in this run
+  int failed = 0;             // failed in this run
+  bool interrupted = false;   // stopped before every scheduled case ran
+  bool worker = false;        // an MPI worker rank: computed, wrote nothing
+  std::vector<std::string> failures;  // "case_id N (label): reason", this run
+};
+
+// Runs the build. Every MPI rank calls it with the same arguments. Input
+// problems (database not writable, locked, corrupt, not towdb, an unfinished
+// build without `resume`, unknown vessels) throw InputError before anything
+// is written.
+BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sweep,
+                       const std::vector<CaseSpec>& cases, const io::ShipCatalog& catalog, const CaseRunner& runner,
+                       const BuildOptions& options);
+
+// The dry run: every case with its keys and what a build would do with it
+// ("new", "changed", "unfinished", "failed", "done"). Reads the database
+// when it exists (never writes; nothing is created).
+struct PlannedCase {
+  CaseSpec spec;
+  CaseKeys keys;
+  CaseState state = CaseState::kNew;
+};
+std::vector<PlannedCase> plan_build(const std::optional<std::filesystem::path>& db_path,
+                                    const std::vector<CaseSpec>& cases, const io::ShipCatalog& catalog,
+                                    const std::string& code_version);
+
+// Keys of every case (InputError for unknown vessels or towlines).
+std::vector<CaseKeys> compute_keys(const std::vector<CaseSpec>& cases, const io::ShipCatalog& catalog,
+                                   const std::string& code_version);
+
+}  // namespace towdb::sweep
+
+#endif  // TOWDB_SWEEP_BUILD_HPP

@@ -1,0 +1,36 @@
+// The production case runner of `towdb build`: a sweep CaseSpec through the
+// whole physics chain (simulation::run_case) to a CaseOutcome, and the
+// strip-theory sea-state added resistance for the calculated mean tension
+// (thesis eq. 2.2 instead of the Towing Manual's direction-blind curve).
+//
+// Conventions: the sweep's sea is turned into sea::SeaState as
+//   Pierson-Moskowitz   wind_kt (fully developed, the thesis's default)
+//   Bretschneider       hs_ft, tp_s (peak period)
+//   JONSWAP             hs_ft, tp_s, gamma
+//   + swell             Bretschneider hs_ft, tp_s at its own heading
+// headings 0 = following seas. Units converted here, once.
+#ifndef TOWDB_SWEEP_SIMULATION_RUNNER_HPP
+#define TOWDB_SWEEP_SIMULATION_RUNNER_HPP
+
+#include "sea/spectrum.hpp"
+#include "simulation/case_runner.hpp"
+#include "sweep/case.hpp"
+#include "sweep/sweep_file.hpp"
+
+namespace towdb::sweep {
+
+// The sea of a case (wind sea at heading_deg, plus its swell if any).
+sea::SeaState sea_state(const SeaSpec& sea, double heading_deg);
+
+// run_case with `options` (days and seed from the spec). Within a build the
+// cases run in parallel, so options.num_threads should be 1.
+CaseRunner simulation_case_runner(simulation::CaseOptions options);
+
+// R_S = 2 int R_aw/zeta^2 S dw of the tow (seakeeping EQ-AR-2), summed over
+// the wave systems, on the case grid of `options` (responses shared with the
+// cases through simulation::cached_responses).
+SeaResistanceFn strip_theory_sea_resistance(simulation::CaseOptions options);
+
+}  // namespace towdb::sweep
+
+#endif  // TOWDB_SWEEP_SIMULATION_RUNNER_HPP

@@ -1,0 +1,83 @@
+// The database writer of a build: the only code that writes towdb's tables.
+// It runs on ONE thread (the builder's writer thread, or MPI rank 0); each
+// case is committed in its own transaction, so a reader (WAL) sees a case
+// either not at all or complete. Converts CaseOutcome (SI) to the schema's
+// user units (kips, lbf, ft, deg) once, here.
+#ifndef TOWDB_SWEEP_WRITER_HPP
+#define TOWDB_SWEEP_WRITER_HPP
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/ship_file.hpp"
+#include "store/database.hpp"
+#include "sweep/case.hpp"
+#include "sweep/keys.hpp"
+
+namespace towdb::sweep {
+
+// ISO 8601 UTC "2026-01-31T12:00:00Z" of now.
+std::string utc_now();
+
+struct BuildProvenance {
+  std::string code_version;
+  std::string command_line;
+  std::string sweep_file;
+  std::string sweep_sha256;
+  std::string host;
+  int threads = 1;
+  int mpi_ranks = 1;
+};
+
+// What registration found for one case of the sweep.
+enum class CaseState {
+  kNew,        // not in the database: inserted as pending
+  kChanged,    // same sweep cell, changed inputs (EQ-SWEEP-5/6): replaced in place, pending
+  kUnfinished, // pending or running from an earlier build: recomputed
+  kFailed,     // failed in an earlier build (recomputed only with retry_failed)
+  kDone,       // up to date: skipped
+};
+const char* to_string(CaseState state);
+
+struct RegisteredCase {
+  std::int64_t case_id = 0;
+  CaseState state = CaseState::kNew;
+};
+
+class DatabaseWriter {
+ public:
+  explicit DatabaseWriter(store::Database& db) : db_(db) {}
+
+  // Builds whose status is still 'running' (killed or crashed runs).
+  std::vector<std::int64_t> unfinished_builds();
+  // Marks them 'interrupted'.
+  void mark_interrupted(const std::vector<std::int64_t>& build_ids);
+
+  std::int64_t begin_build(const BuildProvenance& provenance);
+  void finish_build(std::int64_t build_id, const std::string& status, int cases_done, int cases_failed);
+
+  // Inserts the vessels, towline components and cases of a sweep (one
+  // transaction; case_id in sweep order, EQ-SWEEP-7). `retry_failed` resets
+  // failed cases to pending.
+  std::vector<RegisteredCase> register_cases(const std::vector<CaseSpec>& specs, const std::vector<CaseKeys>& keys,
+                                             const io::ShipCatalog& catalog, std::int64_t build_id,
+                                             bool retry_failed);
+
+  void mark_running(std::int64_t case_id, std::int64_t build_id);
+  // The fit, the results row, every day and status 'done', in one transaction.
+  void write_result(std::int64_t case_id, const CaseSpec& spec, const CaseKeys& keys, const CaseOutcome& outcome,
+                    double runtime_s, const std::string& code_version, std::int64_t build_id);
+  // status 'failed' with the reason (never dropped).
+  void write_failure(std::int64_t case_id, const std::string& message, std::int64_t build_id);
+
+ private:
+  std::int64_t register_vessel(const io::VesselFile& vf);
+  void register_component(const model::TowlineComponent& c);
+  store::Database& db_;
+};
+
+}  // namespace towdb::sweep
+
+#endif  // TOWDB_SWEEP_WRITER_HPP

@@ -1,0 +1,367 @@
+// The database builder (generator/sweep/build.hpp) with the closed-form test
+// runner of tests/support/sweep_test_runner.hpp.
+// Test plan:
+//   sweep-build-1  a build stores every case, its fit, its results and every day; the stored
+//                  numbers are the runner's SI values in the schema's units (kips, lbf, ft)
+//   sweep-build-2  1 thread and 2 threads give identical rows, bit for bit (EQ-SWEEP-7)
+//   sweep-build-3  incremental: a second build computes nothing; a new code version recomputes
+//                  everything; a changed ship file recomputes exactly the cases that use it,
+//                  replacing them in place (same case_id, EQ-SWEEP-5/6)
+//   sweep-build-4  a failing case and a NaN-returning case are stored as 'failed' with their
+//                  reason; --retry-failed recomputes them
+//   sweep-build-5  dry-run plan: states new/done/changed; nothing is written
+//   sweep-build-6  corrupt, read-only, locked, non-towdb databases and a database with an
+//                  unfinished build: named InputError, the file's bytes unchanged
+//   sweep-build-7  a second concurrent build on the same file is refused
+//   sweep-build-8  the thesis Appendix A Gumbel check value through the writer (kips)
+//   sweep-build-9  a stop request (SIGINT) leaves unstarted cases pending and the build
+//                  'interrupted'; the next build continues without --resume
+//   sweep-build-10 the progress line: done/total, rate, ETA, failures
+#include <sqlite3.h>
+#include <sys/file.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "common/units.hpp"
+#include "store/database.hpp"
+#include "sweep/progress.hpp"
+#include "sweep/sweep.hpp"
+#include "sweep_test_runner.hpp"
+#include "test_support.hpp"
+
+namespace towdb::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+struct Fixture {
+  fs::path dir = make_temp_dir("towdb-sweep-build");
+  io::ShipCatalog catalog = io::ShipCatalog::load(source_dir() / "ships");
+  sweep::SweepFile file = sweep::parse_sweep(kSmallSweepToml, "small.toml");
+  std::vector<sweep::CaseSpec> cases = sweep::expand_sweep(file, catalog).cases;
+  ~Fixture() { fs::remove_all(dir); }
+
+  sweep::BuildSummary build(const fs::path& db, int threads, const sweep::CaseRunner& runner,
+                            sweep::BuildOptions o = {}) {
+    o.threads = threads;
+    o.progress = false;
+    return sweep::run_build(db, file, cases, catalog, runner, o);
+  }
+};
+
+constexpr int kSmallSweepCases = 18;  // 1 tug x 2 tows x 2 headings x 2 towlines x 2 tensions + 2
+
+TEST(SweepBuild, StoresEveryCaseInSchemaUnits) {  // sweep-build-1
+  Fixture f;
+  ASSERT_EQ(static_cast<int>(f.cases.size()), kSmallSweepCases);
+  const fs::path db = f.dir / "a.db";
+  const sweep::BuildSummary s = f.build(db, 2, make_test_runner());
+  EXPECT_EQ(s.total, kSmallSweepCases);
+  EXPECT_EQ(s.done, kSmallSweepCases);
+  EXPECT_EQ(s.failed, 0);
+  EXPECT_FALSE(s.interrupted);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE status = 'done'"), kSmallSweepCases);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM results"), kSmallSweepCases);
+  // 16 grid cases of 30 days, explicit-1 with 40 days, explicit-2 with the default 30.
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM daily_maxima"), 16 * 30 + 40 + 30);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM builds WHERE status = 'completed' AND cases_done = 18"), 1);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM vessels"), 6);  // T-ATF, ARS 50, FFG 7, YRBM, AE 26, CG 47
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE fit_id IS NULL"), 0);
+
+  // Every stored number against the runner's SI value converted by hand.
+  store::Database d = store::Database::open(db, store::Database::Mode::kReadOnly);
+  store::Statement st = d.prepare(
+      "SELECT c.case_id, c.speed_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf, c.seed, r.dynamic_999_kips, "
+      "r.gumbel_alpha_per_kip, r.daily_max_variance_kips2, f.a10_lbf_per_ft, f.span_ft, f.breaking_strength_lbf, "
+      "c.spectrum, c.swell_heading_deg FROM cases c JOIN results r USING (case_id) JOIN towline_fits f USING "
+      "(fit_id) ORDER BY c.case_id");
+  std::size_t i = 0;
+  while (st.step()) {
+    ASSERT_LT(i, f.cases.size());
+    const sweep::CaseSpec& spec = f.cases[i];
+    EXPECT_EQ(st.column_int(0), static_cast<std::int64_t>(i + 1)) << "case_id in sweep order (EQ-SWEEP-7)";
+    EXPECT_EQ(st.column_double(1), spec.speed_kt);
+    EXPECT_EQ(st.column_double(2), spec.heading_deg);
+    EXPECT_EQ(st.column_double(3), spec.length_ft);
+    EXPECT_EQ(st.column_double(4), spec.mean_tension_lbf);
+    EXPECT_EQ(st.column_int(5), spec.seed);
+    const sweep::CaseOutcome o = closed_form_outcome(spec, f.catalog);
+    // Unit conversions are single multiplications: equal to the last bit or two.
+    constexpr double kConversionRelTol = 1e-14;  // a few ulps of double rounding
+    EXPECT_REL_CLOSE(st.column_double(6), o.statistics.dynamic_999_n / 4448.2216152605, kConversionRelTol);
+    EXPECT_REL_CLOSE(st.column_double(7), o.statistics.gumbel_alpha_per_n * 4448.2216152605, kConversionRelTol);
+    EXPECT_REL_CLOSE(st.column_double(8), o.statistics.daily_max_variance_n2 / (4448.2216152605 * 4448.2216152605),
+                     kConversionRelTol);
+    // a10 [N/m] -> [lbf/ft]: times 0.3048 / 4.4482216152605.
+    EXPECT_REL_CLOSE(st.column_double(9), o.fit.coefficients_si[0] * 0.3048 / 4.4482216152605, kConversionRelTol);
+    EXPECT_REL_CLOSE(st.column_double(10), o.fit.span_m / 0.3048, kConversionRelTol);
+    EXPECT_REL_CLOSE(st.column_double(11), o.fit.breaking_strength_n / 4.4482216152605, kConversionRelTol);
+    if (spec.sweep_label == "explicit-2") {
+      EXPECT_EQ(st.column_text(12), "jonswap+swell");
+      EXPECT_EQ(st.column_double(13), 90.0);
+      EXPECT_EQ(st.column_int(5), 42);  // the explicit seed
+    }
+    ++i;
+  }
+  EXPECT_EQ(i, f.cases.size());
+  // Type I check at the database level: x_0.999 = u - ln(-ln 0.999)/alpha (EQ-STAT-3).
+  store::Statement g = d.prepare("SELECT gumbel_u_kips, gumbel_alpha_per_kip, dynamic_999_kips FROM results");
+  while (g.step()) {
+    constexpr double kQuantileRelTol = 1e-12;  // same formula, rounding only
+    EXPECT_REL_CLOSE(g.column_double(2), g.column_double(0) - std::log(-std::log(0.999)) / g.column_double(1),
+                     kQuantileRelTol);
+  }
+}
+
+TEST(SweepBuild, OneAndTwoThreadsGiveIdenticalRows) {  // sweep-build-2
+  Fixture f;
+  const fs::path one = f.dir / "one.db", two = f.dir / "two.db";
+  f.build(one, 1, make_test_runner());
+  f.build(two, 2, make_test_runner(sleeping(3)));  // sleeps shuffle the completion order
+  const std::string a = dump_database(one, provenance_columns());
+  const std::string b = dump_database(two, provenance_columns());
+  EXPECT_GT(a.size(), 10000u);
+  EXPECT_EQ(a, b);
+}
+
+TEST(SweepBuild, IncrementalRecomputesOnlyChangedCases) {  // sweep-build-3
+  Fixture f;
+  const fs::path db = f.dir / "inc.db";
+  f.build(db, 2, make_test_runner());
+  const std::string first = dump_database(db, provenance_columns());
+
+  const sweep::BuildSummary again = f.build(db, 2, make_test_runner());
+  EXPECT_EQ(again.up_to_date, kSmallSweepCases);
+  EXPECT_EQ(again.scheduled, 0);
+  EXPECT_EQ(dump_database(db, provenance_columns()), first);
+
+  sweep::BuildOptions v2;
+  v2.code_version = "99.0.0-test";
+  const sweep::BuildSummary recomputed = f.build(db, 2, make_test_runner(), v2);
+  EXPECT_EQ(recomputed.scheduled, kSmallSweepCases);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases"), kSmallSweepCases);  // replaced in place
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM results WHERE code_version = '99.0.0-test'"), kSmallSweepCases);
+
+  // A changed YRBM ship file (a comment added: new content hash) recomputes the
+  // 8 YRBM cases only, with the same case_ids.
+  const fs::path ships = f.dir / "ships";
+  fs::copy(source_dir() / "ships", ships, fs::copy_options::recursive);
+  { std::ofstream(ships / "yrbm.toml", std::ios::app) << "\n# edited\n"; }
+  const io::ShipCatalog edited = io::ShipCatalog::load(ships);
+  const std::int64_t yrbm_ids_before =
+      query_int(db, "SELECT sum(case_id) FROM cases WHERE tow_name = 'YRBM'");
+  sweep::BuildOptions o = v2;
+  o.threads = 2;
+  o.progress = false;
+  const sweep::BuildSummary s = sweep::run_build(db, f.file, f.cases, edited, make_test_runner(), o);
+  EXPECT_EQ(s.scheduled, 8);
+  EXPECT_EQ(s.up_to_date, kSmallSweepCases - 8);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases"), kSmallSweepCases);
+  EXPECT_EQ(query_int(db, "SELECT sum(case_id) FROM cases WHERE tow_name = 'YRBM'"), yrbm_ids_before);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM vessels WHERE name = 'YRBM'"), 2);  // both file versions kept
+  EXPECT_EQ(query_int(db, "SELECT count(DISTINCT tow_vessel_id) FROM cases WHERE tow_name = 'YRBM'"), 1);
+}
+
+TEST(SweepBuild, FailedCasesAreStoredWithTheirReason) {  // sweep-build-4
+  Fixture f;
+  const fs::path db = f.dir / "fail.db";
+  TestRunnerOptions opts;
+  opts.fail_when = [](const sweep::CaseSpec& s) { return s.sweep_label == "explicit-1"; };
+  opts.nan_when = [](const sweep::CaseSpec& s) { return s.tow == "YRBM" && s.heading_deg == 0.0; };
+  const sweep::BuildSummary s = f.build(db, 2, make_test_runner(opts));
+  EXPECT_EQ(s.failed, 1 + 4);
+  EXPECT_EQ(s.done, kSmallSweepCases - 5);
+  EXPECT_EQ(s.failures.size(), 5u);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE status = 'failed' AND error_message LIKE "
+                          "'numerical error: test runner: catenary solver did not converge (iteration 50%'"),
+            1);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE status = 'failed' AND error_message LIKE "
+                          "'numerical error: case runner output: statistics.dynamic_999_n = nan is not finite'"),
+            4);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM results r JOIN cases c USING (case_id) WHERE c.status = 'failed'"),
+            0);
+  EXPECT_EQ(query_int(db, "SELECT cases_failed FROM builds"), 5);
+
+  // Not retried by default, recomputed with retry_failed.
+  const sweep::BuildSummary kept = f.build(db, 2, make_test_runner());
+  EXPECT_EQ(kept.scheduled, 0);
+  EXPECT_EQ(kept.previously_failed, 5);
+  sweep::BuildOptions retry;
+  retry.retry_failed = true;
+  const sweep::BuildSummary redone = f.build(db, 2, make_test_runner(), retry);
+  EXPECT_EQ(redone.scheduled, 5);
+  EXPECT_EQ(redone.done, 5);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE status = 'done'"), kSmallSweepCases);
+}
+
+TEST(SweepBuild, DryRunPlanWritesNothing) {  // sweep-build-5
+  Fixture f;
+  const fs::path db = f.dir / "plan.db";
+  auto plan = sweep::plan_build(db, f.cases, f.catalog, kVersion);
+  EXPECT_FALSE(fs::exists(db));
+  ASSERT_EQ(static_cast<int>(plan.size()), kSmallSweepCases);
+  for (const auto& p : plan) EXPECT_EQ(p.state, sweep::CaseState::kNew);
+  f.build(db, 1, make_test_runner());
+  const std::string before = read_bytes(db);
+  plan = sweep::plan_build(db, f.cases, f.catalog, kVersion);
+  for (const auto& p : plan) EXPECT_EQ(p.state, sweep::CaseState::kDone);
+  plan = sweep::plan_build(db, f.cases, f.catalog, "99.0.0-test");
+  for (const auto& p : plan) EXPECT_EQ(p.state, sweep::CaseState::kChanged);
+  EXPECT_EQ(read_bytes(db), before);
+}
+
+void expect_refused(Fixture& f, const fs::path& db, const std::string& message_part,
+                    sweep::BuildOptions o = {}) {
+  const std::string before = fs::exists(db) ? read_bytes(db) : "";
+  try {
+    f.build(db, 1, make_test_runner(), o);
+    ADD_FAILURE() << "no error for " << db;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(message_part), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(db.string()), std::string::npos) << "names the file: " << e.what();
+  }
+  EXPECT_EQ(fs::exists(db) ? read_bytes(db) : "", before) << "the file was changed";
+}
+
+TEST(SweepBuild, BadDatabasesAreRefusedUntouched) {  // sweep-build-6
+  Fixture f;
+  const fs::path corrupt = f.dir / "corrupt.db";
+  { std::ofstream(corrupt, std::ios::binary) << std::string(8192, '\x5a'); }
+  expect_refused(f, corrupt, "not a valid towdb database");
+
+  const fs::path other = f.dir / "other.db";
+  {
+    sqlite3* raw = nullptr;
+    sqlite3_open(other.c_str(), &raw);
+    sqlite3_exec(raw, "CREATE TABLE t (x); INSERT INTO t VALUES (1);", nullptr, nullptr, nullptr);
+    sqlite3_close(raw);
+  }
+  expect_refused(f, other, "not a towdb database");
+
+  const fs::path good = f.dir / "good.db";
+  f.build(good, 1, make_test_runner());
+  const std::string reference = dump_database(good, {});
+
+  fs::permissions(good, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  expect_refused(f, good, "read-only");
+  fs::permissions(good, fs::perms::owner_read | fs::perms::owner_write);
+
+  {  // another connection holds the write lock
+    sqlite3* raw = nullptr;
+    sqlite3_open(good.c_str(), &raw);
+    ASSERT_EQ(sqlite3_exec(raw, "BEGIN EXCLUSIVE", nullptr, nullptr, nullptr), SQLITE_OK);
+    sweep::BuildOptions v2;
+    v2.code_version = "99.0.0-test";  // would rewrite every case
+    try {
+      f.build(good, 1, make_test_runner(), v2);
+      ADD_FAILURE() << "no error for a locked database";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("another process holds a lock"), std::string::npos) << e.what();
+    }
+    sqlite3_exec(raw, "ROLLBACK", nullptr, nullptr, nullptr);
+    sqlite3_close(raw);
+  }
+  EXPECT_EQ(dump_database(good, {}), reference);
+
+  {  // a build that never finished (as after kill -9)
+    sqlite3* raw = nullptr;
+    sqlite3_open(good.c_str(), &raw);
+    sqlite3_exec(raw, "UPDATE builds SET status = 'running', finished_utc = NULL", nullptr, nullptr, nullptr);
+    sqlite3_close(raw);
+  }
+  const std::string unfinished = dump_database(good, {});
+  sweep::BuildOptions v3;
+  v3.code_version = "99.0.0-test";
+  try {
+    f.build(good, 1, make_test_runner(), v3);
+    ADD_FAILURE() << "no error for an unfinished build";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("did not finish (killed or crashed); run again with --resume"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(dump_database(good, {}), unfinished);
+}
+
+TEST(SweepBuild, ConcurrentBuildIsRefused) {  // sweep-build-7
+  Fixture f;
+  const fs::path db = f.dir / "busy.db";
+  f.build(db, 1, make_test_runner());
+  const int fd = ::open(db.c_str(), O_RDONLY);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);  // what a running build holds
+  expect_refused(f, db, "another towdb build is writing to this database");
+  ::close(fd);
+}
+
+TEST(SweepBuild, ThesisGumbelCheckValueThroughTheWriter) {  // sweep-build-8
+  // EVIDENCE-OF: EQ-STAT-3 — thesis Appendix A sample output: daily maxima with mean 41.06 kips and
+  // variance 10.80 kips^2 give x_0.999 = 57.27 kips. The runner hands the writer SI values; the
+  // database must show the thesis's kips.
+  Fixture f;
+  const double kip_n = units::kips_to_n(1.0);
+  const statistics::Gumbel g = statistics::gumbel_from_moments(41.06 * kip_n, 10.80 * kip_n * kip_n);
+  sweep::CaseRunner runner = [&](const sweep::CaseSpec& spec, const io::ShipCatalog& cat) {
+    sweep::CaseOutcome o = closed_form_outcome(spec, cat);
+    o.statistics.gumbel_u_n = g.location;
+    o.statistics.gumbel_alpha_per_n = g.alpha();
+    o.statistics.daily_max_mean_n = 41.06 * kip_n;
+    o.statistics.daily_max_variance_n2 = 10.80 * kip_n * kip_n;
+    o.statistics.dynamic_999_n = g.quantile(0.999);
+    return o;
+  };
+  const fs::path db = f.dir / "thesis.db";
+  f.build(db, 1, runner);
+  store::Database d = store::Database::open(db, store::Database::Mode::kReadOnly);
+  store::Statement st =
+      d.prepare("SELECT daily_max_mean_kips, daily_max_variance_kips2, dynamic_999_kips FROM results LIMIT 1");
+  ASSERT_TRUE(st.step());
+  // The thesis prints mean and variance with 4 significant figures (+-0.005 each moves x_0.999 by
+  // up to +-0.009 kips) and the result to +-0.005 kips: 0.014 / 57.27 = 2.4e-4.
+  constexpr double kThesisPrintRelTol = 3e-4;
+  EXPECT_REL_CLOSE(st.column_double(0), 41.06, 1e-12);
+  EXPECT_REL_CLOSE(st.column_double(1), 10.80, 1e-12);
+  EXPECT_REL_CLOSE(st.column_double(2), 57.27, kThesisPrintRelTol);
+}
+
+TEST(SweepBuild, StopRequestLeavesCasesPending) {  // sweep-build-9
+  Fixture f;
+  const fs::path db = f.dir / "stop.db";
+  std::atomic<bool> stop{true};  // as if SIGINT arrived before the first case started
+  sweep::BuildOptions o;
+  o.stop = &stop;
+  const sweep::BuildSummary s = f.build(db, 2, make_test_runner(), o);
+  EXPECT_TRUE(s.interrupted);
+  EXPECT_EQ(s.done, 0);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE status = 'pending'"), kSmallSweepCases);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM builds WHERE status = 'interrupted'"), 1);
+  const sweep::BuildSummary next = f.build(db, 2, make_test_runner());  // no --resume needed
+  EXPECT_EQ(next.done, kSmallSweepCases);
+  EXPECT_FALSE(next.interrupted);
+}
+
+TEST(SweepBuild, ProgressLine) {  // sweep-build-10
+  // 13 of 240 cases finished (1 failed) after 26 s: 0.5 cases/s, 227 left -> 454 s = 7m34s.
+  EXPECT_EQ(sweep::ProgressBar::format(12, 1, 240, 26.0),
+            "13/240 cases [#-----------------------]   5.4%  0.50 cases/s  ETA 7m34s  1 failed");
+  EXPECT_EQ(sweep::ProgressBar::format(0, 0, 10, 1.0),
+            "0/10 cases [------------------------]   0.0%  0.00 cases/s  ETA ?  0 failed");
+  EXPECT_EQ(sweep::ProgressBar::format(10, 0, 10, 5.0),
+            "10/10 cases [########################] 100.0%  2.00 cases/s  ETA 0s  0 failed");
+}
+
+}  // namespace
+}  // namespace towdb::test
