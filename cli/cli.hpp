@@ -33,6 +33,7 @@ void add_query_commands(CLI::App& app, Context& ctx);  // query, max-speed, min-
 void add_export_command(CLI::App& app, Context& ctx);
 void add_towline_command(CLI::App& app, Context& ctx);
 void add_vessel_command(CLI::App& app, Context& ctx);
+void add_validate_command(CLI::App& app, Context& ctx);  // thesis Appendix C comparison
 
 }  // namespace towdb::cli
 

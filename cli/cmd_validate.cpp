@@ -1,0 +1,348 @@
+// towdb validate: runs the thesis's Appendix C calibration cases through the
+// whole chain and compares our dynamic tension with the thesis's
+// (generator/validation/validation.hpp states the measures).
+//
+// Output directory:
+//   cases.csv   one line per case (ours, thesis, ratio, ...); written as each
+//               case finishes, so an interrupted run resumes where it stopped
+//               (a case is reused when its case number and simulated days match)
+//   report.md   median ratio, Spearman, shares within 1.5x and 2x, by group
+//   scatter.png log-log scatter of ours vs thesis (gnuplot)
+//   run-signature.txt  the options and a hash of the ship files; a journal
+//               written under another signature is refused (no silent mixing)
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "cli.hpp"
+#include "common/error.hpp"
+#include "output.hpp"
+#include "plot.hpp"
+#include "sweep/calibration.hpp"
+#include "validation/validation.hpp"
+
+namespace towdb::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ValidateArgs {
+  std::string cases_path;
+  std::string out_dir;
+  int threads = 1;
+  double days_scale = 1.0;
+  int min_days = 20;
+  int max_cases = 0;
+  int response_frequencies = 48;
+  std::vector<std::string> filters;
+  bool fresh = false;
+  bool no_plot = false;
+  bool no_second_order = false;
+  bool no_wave_damping = false;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read '" + path.string() + "'");
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+// --filter KEY=VALUE: keys tug, tow, line (w|f|wire|fiber), heading, wind,
+// speed, case; names compare like the catalog (case, spaces and hyphens ignored).
+bool matches(const sweep::CalibrationRow& r, const std::string& filter) {
+  const auto eq = filter.find('=');
+  if (eq == std::string::npos) throw InputError("--filter '" + filter + "': expected KEY=VALUE");
+  const std::string key = filter.substr(0, eq), value = filter.substr(eq + 1);
+  const auto number = [&]() {
+    try {
+      std::size_t used = 0;
+      const double v = std::stod(value, &used);
+      if (used != value.size()) throw std::invalid_argument(value);
+      return v;
+    } catch (const std::exception&) {
+      throw InputError("--filter '" + filter + "': '" + value + "' is not a number");
+    }
+  };
+  if (key == "tug") return io::normalize_name(r.tug) == io::normalize_name(value) ||
+                           io::normalize_name(r.tug).rfind(io::normalize_name(value), 0) == 0;
+  if (key == "tow") return io::normalize_name(r.tow) == io::normalize_name(value) ||
+                           io::normalize_name(r.tow).rfind(io::normalize_name(value), 0) == 0;
+  if (key == "line") return r.line == value || r.line.substr(0, 1) == value;
+  if (key == "heading") return r.heading_deg == number();
+  if (key == "wind") return r.wind_kt == number();
+  if (key == "speed") return r.speed_kt == number();
+  if (key == "case") return r.case_number == static_cast<int>(number());
+  throw InputError("--filter '" + filter + "': unknown key '" + key + "' (tug, tow, line, heading, wind, speed, case)");
+}
+
+void write_atomically(const fs::path& path, const std::string& text) {
+  const fs::path tmp = path.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError("cannot write '" + tmp.string() + "'");
+    out << text;
+    if (!out) throw InputError("cannot write '" + tmp.string() + "'");
+  }
+  fs::rename(tmp, path);
+}
+
+// Everything besides the case rows that decides an outcome: the run options
+// and the contents of every ship and towline file. A journal written under
+// another signature is not resumed.
+std::string run_signature(const validation::RunOptions& o, const io::ShipCatalog& catalog) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(catalog.directory())) {
+    if (entry.is_regular_file() && entry.path().extension() == ".toml") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  std::string hashes;
+  for (const auto& f : files) hashes += io::sha256_hex(read_text(f));
+  std::ostringstream os;
+  os << "days_scale=" << fmt(o.days_scale) << " min_days=" << o.min_days
+     << " response_frequencies=" << o.response_frequencies << " second_order_forces=" << o.second_order_forces
+     << " wave_surge_damping=" << o.wave_surge_damping << " ships_sha256=" << io::sha256_hex(hashes) << "\n";
+  return os.str();
+}
+
+void write_scatter_plot(const fs::path& png, const std::vector<validation::CaseOutcome>& outcomes) {
+  const fs::path dir = png.parent_path() / ".plot-data";
+  fs::create_directories(dir);
+  std::map<std::string, std::ofstream> files;
+  double lo = 1e300, hi = 0.0;
+  for (const auto& c : outcomes) {
+    if (c.status != validation::CaseStatus::kOk) continue;
+    std::string key = c.row.tow + " " + c.row.line;
+    for (char& ch : key) {
+      if (ch == ' ') ch = '_';
+    }
+    auto& f = files[key];
+    if (!f.is_open()) f.open(dir / (key + ".dat"));
+    f << c.row.dynamic_999_kips << " " << c.ours_kips << "\n";
+    lo = std::min({lo, c.row.dynamic_999_kips, c.ours_kips});
+    hi = std::max({hi, c.row.dynamic_999_kips, c.ours_kips});
+  }
+  if (files.empty()) return;
+  for (auto& [k, f] : files) f.close();
+  lo = std::pow(10.0, std::floor(std::log10(lo)));
+  hi = std::pow(10.0, std::ceil(std::log10(hi)));
+  std::ostringstream s;
+  s << "set terminal pngcairo size 1000,900 font 'sans,11'\n"
+    << "set output '" << png.string() << "'\n"
+    << "set logscale xy\nset grid\nset key top left\n"
+    << "set xrange [" << lo << ":" << hi << "]\nset yrange [" << lo << ":" << hi << "]\n"
+    << "set xlabel 'thesis dynamic tension, Appendix C (kips)'\n"
+    << "set ylabel 'towdb dynamic tension (kips)'\n"
+    << "set title 'Dynamic tension at 0.001 per day: towdb vs thesis'\n"
+    << "set arrow from 300," << lo << " to 300," << hi << " nohead dt 3 lc rgb 'gray40'\n"
+    << "set label 'validity limit 300 kips (thesis 6.2)' at 310," << lo * 1.5 << " tc rgb 'gray40'\n"
+    << "plot x title 'ours = thesis' lc rgb 'black' lw 2, "
+    << "1.5*x title 'factor 1.5' lc rgb 'gray50' dt 2, x/1.5 notitle lc rgb 'gray50' dt 2, "
+    << "2*x title 'factor 2' lc rgb 'gray70' dt 4, x/2 notitle lc rgb 'gray70' dt 4";
+  int k = 0;
+  for (const auto& [key, f] : files) {
+    std::string title = key;
+    for (char& ch : title) {
+      if (ch == '_') ch = ' ';
+    }
+    const bool fiber = key.find("fiber") != std::string::npos;
+    s << ", '" << (dir / (key + ".dat")).string() << "' using 1:2 with points pt " << (fiber ? 6 : 7) << " lc "
+      << (k / 2 + 1) << " title '" << title << "'";
+    ++k;
+  }
+  s << "\n";
+  run_gnuplot(s.str());
+  fs::remove_all(dir);
+}
+
+int run_validate(const Context& ctx, const ValidateArgs& a) {
+  const io::ShipCatalog catalog = load_catalog(ctx);
+  std::vector<sweep::CalibrationRow> rows =
+      sweep::parse_calibration_csv(read_text(a.cases_path), a.cases_path, catalog);
+  if (!a.filters.empty()) {
+    std::vector<sweep::CalibrationRow> kept;
+    for (const auto& r : rows) {
+      bool all = true;
+      for (const auto& f : a.filters) all = all && matches(r, f);
+      if (all) kept.push_back(r);
+    }
+    rows = std::move(kept);
+  }
+  if (a.max_cases > 0 && rows.size() > static_cast<std::size_t>(a.max_cases)) {
+    rows.resize(static_cast<std::size_t>(a.max_cases));
+  }
+  if (rows.empty()) throw InputError("no cases selected (check --filter / --max-cases)");
+
+  validation::RunOptions options;
+  options.days_scale = a.days_scale;
+  options.min_days = a.min_days;
+  options.num_threads = a.threads;
+  options.response_frequencies = a.response_frequencies;
+  options.second_order_forces = !a.no_second_order;
+  options.wave_surge_damping = !a.no_wave_damping;
+  options.validate();
+
+  const fs::path out(a.out_dir);
+  fs::create_directories(out);
+  const fs::path journal = out / "cases.csv";
+  const fs::path signature_file = out / "run-signature.txt";
+  const std::string signature = run_signature(options, catalog);
+  std::vector<validation::CaseOutcome> done;
+  if (!a.fresh && fs::exists(journal)) {
+    if (!fs::exists(signature_file) || read_text(signature_file) != signature) {
+      throw InputError("--out " + out.string() + " holds cases computed with other options or ship files (" +
+                       signature_file.string() + "); use another --out or --fresh");
+    }
+    done = validation::parse_journal(read_text(journal));
+  }
+  write_atomically(signature_file, signature);
+  {
+    // Rewrite the journal cleanly (drops a half-written last line), then append.
+    std::string text = validation::journal_header() + "\n";
+    for (const auto& c : done) text += validation::journal_line(c) + "\n";
+    write_atomically(journal, text);
+  }
+  std::ofstream append(journal, std::ios::app);
+
+  int reused = 0;
+  for (const auto& r : rows) {
+    const int days = validation::simulated_days(r, options);
+    for (const auto& d : done) {
+      if (d.status == validation::CaseStatus::kOk && d.row.case_number == r.case_number && d.days_run == days) {
+        ++reused;
+        break;
+      }
+    }
+  }
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  std::cerr << "validate: " << rows.size() << " cases (" << reused << " from " << journal.string()
+            << "), days scale " << fmt(a.days_scale) << ", " << a.threads << " thread(s)\n";
+  const auto start = std::chrono::steady_clock::now();
+  int computed = 0;
+  const int to_compute = static_cast<int>(rows.size()) - reused;
+  const auto on_outcome = [&](const validation::CaseOutcome& c, int finished, int total) {
+    append << validation::journal_line(c) << "\n" << std::flush;
+    ++computed;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double eta = elapsed * (to_compute - computed) / computed;
+    const std::string what = c.status == validation::CaseStatus::kOk
+                                 ? "ratio " + fmt(c.ratio(), 2)
+                                 : "FAILED: " + c.error;
+    if (tty) {
+      const int width = 30;
+      const int filled = width * finished / total;
+      std::fprintf(stderr, "\r  [%s%s] %d/%d cases  %.0f s elapsed  ETA %.0f s  case %d %s\033[K",
+                   std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                   std::string(static_cast<std::size_t>(width - filled), '.').c_str(), finished, total, elapsed, eta,
+                   c.row.case_number, what.substr(0, 60).c_str());
+      if (finished == total) std::fprintf(stderr, "\n");
+    } else {
+      std::cerr << "  " << finished << "/" << total << " case " << c.row.case_number << " " << c.row.tug << "/"
+                << c.row.tow << " " << fmt(c.row.heading_deg, 0) << " deg " << c.row.line << ": thesis "
+                << fmt(c.row.dynamic_999_kips, 1) << " kips, ours " << fmt(c.ours_kips, 1) << " (" << what << ", "
+                << c.days_run << " days, " << fmt(c.runtime_s, 1) << " s)\n";
+    }
+  };
+  std::vector<validation::CaseOutcome> outcomes = validation::run_all(rows, catalog, options, done, on_outcome);
+  append.close();
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  // Final journal: this run's cases in input order, then earlier cases not selected now.
+  {
+    std::set<int> selected;
+    for (const auto& r : rows) selected.insert(r.case_number);
+    std::string text = validation::journal_header() + "\n";
+    for (const auto& c : outcomes) text += validation::journal_line(c) + "\n";
+    std::set<int> kept;
+    for (const auto& d : done) {
+      if (!selected.count(d.row.case_number) && kept.insert(d.row.case_number).second) {
+        text += validation::journal_line(d) + "\n";
+      }
+    }
+    write_atomically(journal, text);
+  }
+
+  const validation::Report report = validation::make_report(outcomes);
+  double case_time_s = 0.0;
+  for (const auto& c : outcomes) case_time_s += c.runtime_s;
+  std::ostringstream note;
+  note << "Run: `towdb validate --cases " << fs::path(a.cases_path).filename().string() << " --days-scale "
+       << fmt(a.days_scale) << " --min-days " << a.min_days << " --response-frequencies " << a.response_frequencies;
+  for (const auto& f : a.filters) note << " --filter " << f;
+  if (a.max_cases > 0) note << " --max-cases " << a.max_cases;
+  if (a.no_second_order) note << " --no-second-order-forces";
+  if (a.no_wave_damping) note << " --no-wave-surge-damping";
+  note << "`. Simulated days per case = max(" << a.min_days << ", round(" << fmt(a.days_scale)
+       << " x thesis days)); seed = thesis case number. Sum of case run times " << fmt(case_time_s, 0)
+       << " s (this invocation: " << fmt(wall_s, 0) << " s wall, " << reused << " cases reused from the journal).";
+  write_atomically(out / "report.md", validation::report_markdown(report, note.str()));
+  if (!a.no_plot) {
+    try {
+      write_scatter_plot(out / "scatter.png", outcomes);
+    } catch (const std::exception& e) {
+      std::cerr << "validate: warning: no plot: " << e.what() << "\n";
+    }
+  }
+
+  const auto& v = report.valid;
+  std::cout << "Validation against thesis Appendix C: " << outcomes.size() << " cases, " << report.failed
+            << " failed\n\n";
+  TextTable t({"cases <= 300 kips", "value", "target"});
+  t.add_row({"count", std::to_string(v.count), ""});
+  t.add_row({"median ratio (ours / thesis)", fmt(v.median_ratio, 3),
+             std::string("0.80 - 1.25 ") + (report.median_ok ? "met" : "MISSED")});
+  t.add_row({"Spearman rank correlation", fmt(v.spearman, 3),
+             std::string(">= 0.80 ") + (report.spearman_ok ? "met" : "MISSED")});
+  t.add_row({"within a factor 1.5", fmt(100.0 * v.within_1_5, 0) + " %",
+             std::string(">= 70 % ") + (report.within_ok ? "met" : "MISSED")});
+  t.add_row({"within a factor 2", fmt(100.0 * v.within_2, 0) + " %", ""});
+  t.add_row({"cases > 300 kips: median ratio",
+             report.above_limit.count > 0 ? fmt(report.above_limit.median_ratio, 3) : "-",
+             std::to_string(report.above_limit.count) + " cases"});
+  t.print(std::cout);
+  std::cout << "\nreport: " << (out / "report.md").string() << "\n";
+  return report.failed == static_cast<int>(outcomes.size()) ? 1 : 0;
+}
+
+}  // namespace
+
+void add_validate_command(CLI::App& app, Context& ctx) {
+  auto a = std::make_shared<ValidateArgs>();
+  CLI::App* c = app.add_subcommand("validate", "Run the thesis calibration cases and compare with the thesis database");
+  c->add_option("--cases", a->cases_path,
+                "Calibration CSV (case,tug,tow,speed_kt,wind_kt,heading_deg,length_ft,line,mean_lbf,days,dyn_kips)")
+      ->required();
+  c->add_option("--out", a->out_dir, "Output directory: cases.csv (also the resume state), report.md, scatter.png")
+      ->required();
+  c->add_option("--threads", a->threads, "Cases run in parallel (default 1; 0 = all cores)")
+      ->check(CLI::Range(0, 1024));
+  c->add_option("--days-scale", a->days_scale, "Simulated days = this x the thesis's days (default 1)")
+      ->check(CLI::Range(1e-4, 10.0));
+  c->add_option("--min-days", a->min_days, "At least this many simulated days per case (default 20; >= 10)")
+      ->check(CLI::Range(10, 1000000));
+  c->add_option("--max-cases", a->max_cases, "Run only the first N selected cases")->check(CLI::Range(1, 1000000));
+  c->add_option("--response-frequencies", a->response_frequencies,
+                "Frequencies of the transfer-function grid (default 48)")
+      ->check(CLI::Range(8, 400));
+  c->add_option("--filter", a->filters,
+                "KEY=VALUE, repeatable (all must match): tug, tow, line (w|f), heading, wind, speed, case");
+  c->add_flag("--fresh", a->fresh, "Ignore an existing cases.csv in --out (recompute every case)");
+  c->add_flag("--no-plot", a->no_plot, "Do not write scatter.png");
+  c->add_flag("--no-second-order-forces", a->no_second_order,
+              "Diagnostic: leave out the slowly varying (Newman) surge forces");
+  c->add_flag("--no-wave-surge-damping", a->no_wave_damping, "Diagnostic: leave out the wave-induced surge damping");
+  c->callback([&ctx, a] { ctx.action = [&ctx, a] { return run_validate(ctx, *a); }; });
+}
+
+}  // namespace towdb::cli

@@ -1,0 +1,86 @@
+// CLI tests for `towdb validate` (thesis Appendix C comparison).
+// Test plan:
+//   cli-validate-1  a two-case table, one case that cannot run: exit 0, the
+//                   failure is reported with its message, the other case has
+//                   a ratio; report.md and cases.csv are written
+//   cli-validate-2  a second invocation resumes: the ok case is reused
+//                   bit for bit, not recomputed; other options are refused
+//   cli-validate-3  bad arguments -> exit 2 with a named message
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+
+namespace towdb::test {
+namespace {
+
+std::string read(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+// Thesis Appendix C run 206 (T-ATF / FFG 7, 9 kt, 20 kt wind, head seas,
+// 800 ft fiber, 79,000 lbf: 98.5 kips), and the same row with a frigate named
+// as the tug (parses, but the case cannot run).
+constexpr const char* kTable =
+    "case,tug,tow,speed_kt,wind_kt,heading_deg,length_ft,line,mean_lbf,days,dyn_kips\n"
+    "206,T-ATF,FFG7,9.0,20.0,180.0,800.0,f,79000.0,500,98.5\n"
+    "9999,FFG7,FFG7,9.0,20.0,180.0,800.0,f,79000.0,500,98.5\n";
+
+TEST(CliValidate, ReportsFailuresAndResumes) {  // cli-validate-1, cli-validate-2
+  const auto dir = make_temp_dir("towdb-validate");
+  { std::ofstream(dir / "table.csv") << kTable; }
+  const std::string base = "validate --cases '" + (dir / "table.csv").string() + "' --out '" + (dir / "out").string() +
+                           "' --days-scale 0.02 --response-frequencies 16 --no-plot";
+  const std::string args = base + " --min-days 10";
+  const CommandResult first = run_towdb(args);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const std::string report = read(dir / "out" / "report.md");
+  EXPECT_NE(report.find("## Targets"), std::string::npos);
+  EXPECT_NE(report.find("| 9999 | FFG 7 | FFG 7 |"), std::string::npos) << report;
+  EXPECT_NE(report.find("not a tug"), std::string::npos) << report;
+  const std::string journal = read(dir / "out" / "cases.csv");
+  const auto ok_line = journal.find("\n206,T-ATF 166,FFG 7,");
+  ASSERT_NE(ok_line, std::string::npos) << journal;
+  const std::string line206 = journal.substr(ok_line + 1, journal.find('\n', ok_line + 1) - ok_line - 1);
+  EXPECT_NE(line206.find(",10,ok,"), std::string::npos) << line206;  // 0.02 x 500 = 10 days
+
+  const CommandResult second = run_towdb(args);
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  EXPECT_NE(second.err.find("2 cases (1 from"), std::string::npos) << second.err;
+  const std::string journal2 = read(dir / "out" / "cases.csv");
+  // The ok line is reused verbatim (same tension digits and run time).
+  EXPECT_NE(journal2.find(line206), std::string::npos) << journal2;
+
+  // Other options must not mix into the same journal.
+  const CommandResult other = run_towdb(base + " --min-days 11");
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("other options or ship files"), std::string::npos) << other.err;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliValidate, BadArgumentsExitTwo) {  // cli-validate-3
+  const CommandResult missing = run_towdb("validate --out /tmp/x");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("--cases"), std::string::npos) << missing.err;
+  const auto dir = make_temp_dir("towdb-validate-bad");
+  { std::ofstream(dir / "table.csv") << kTable; }
+  const CommandResult filter = run_towdb("validate --cases '" + (dir / "table.csv").string() + "' --out '" +
+                                         (dir / "out").string() + "' --filter colour=red");
+  EXPECT_EQ(filter.exit_code, 2);
+  EXPECT_NE(filter.err.find("unknown key 'colour'"), std::string::npos) << filter.err;
+  const CommandResult nothing = run_towdb("validate --cases '" + (dir / "table.csv").string() + "' --out '" +
+                                          (dir / "out").string() + "' --filter tow=YRBM");
+  EXPECT_EQ(nothing.exit_code, 2);
+  EXPECT_NE(nothing.err.find("no cases selected"), std::string::npos) << nothing.err;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace towdb::test
