@@ -1,8 +1,6 @@
 // Golden check of the Pierson-Moskowitz sea against thesis Table 5-4
 // (tests/data/sea/thesis_table_5_4.csv: Desroches 1997, wind speed -> Hs).
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,26 +19,10 @@ struct TableRow {
 };
 
 std::vector<TableRow> read_table() {
-  const auto path = test::source_dir() / "tests/data/sea/thesis_table_5_4.csv";
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << "cannot open " << path;
+  // Columns: wind_kt, beaufort, hs_ft.
   std::vector<TableRow> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::istringstream fields(line);
-    std::string wind;
-    std::string beaufort;
-    std::string hs;
-    std::getline(fields, wind, ',');
-    std::getline(fields, beaufort, ',');
-    std::getline(fields, hs, ',');
-    rows.push_back({std::stod(wind), std::stod(hs)});
+  for (const auto& f : test::read_csv_rows(test::source_dir() / "tests/data/sea/thesis_table_5_4.csv")) {
+    rows.push_back({std::stod(f.at(0)), std::stod(f.at(2))});
   }
   return rows;
 }

@@ -7,9 +7,7 @@
 //     (tests/data/seakeeping/journee1992_wigley_tables.csv).
 // Each data file states where its numbers come from.
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,26 +22,8 @@
 namespace towdb::seakeeping {
 namespace {
 
-// Comma-separated rows after the header, '#' lines skipped.
 std::vector<std::vector<std::string>> read_csv(const std::string& name) {
-  std::ifstream in(test::source_dir() / "tests/data/seakeeping" / name);
-  EXPECT_TRUE(in.good()) << name;
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
+  return test::read_csv_rows(test::source_dir() / "tests/data/seakeeping" / name);
 }
 
 // Ursell's expressions evaluated with 6 multipoles and read from vertices of

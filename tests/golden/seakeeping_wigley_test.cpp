@@ -1,8 +1,6 @@
 // Strip theory against Journee's (1992) Wigley hull experiments in head waves
 // (reference data: tests/data/seakeeping/journee1992_wigley.csv).
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -26,30 +24,10 @@ struct Row {
 };
 
 std::vector<Row> read_rows() {
-  std::ifstream in(test::source_dir() / "tests/data/seakeeping/journee1992_wigley.csv");
-  EXPECT_TRUE(in.good());
+  // Columns: hull, froude, wavelength, quantity, measured, asserted.
   std::vector<Row> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::stringstream ss(line);
-    Row r;
-    std::string f;
-    std::getline(ss, r.hull, ',');
-    std::getline(ss, f, ',');
-    r.froude = std::stod(f);
-    std::getline(ss, r.wavelength, ',');
-    std::getline(ss, r.quantity, ',');
-    std::getline(ss, f, ',');
-    r.measured = std::stod(f);
-    std::getline(ss, f, ',');
-    r.asserted = f == "1";
-    rows.push_back(r);
+  for (const auto& f : test::read_csv_rows(test::source_dir() / "tests/data/seakeeping/journee1992_wigley.csv")) {
+    rows.push_back({f.at(0), std::stod(f.at(1)), f.at(2), f.at(3), std::stod(f.at(4)), f.at(5) == "1"});
   }
   return rows;
 }

@@ -1,8 +1,6 @@
 // Golden check of the GEV and Gumbel maximum-likelihood fits against the
 // published Port Pirie analysis (tests/data/statistics/portpirie.csv: Coles
 // 2001, section 3.4.1, and ismev::gev.fit to 8 digits).
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -15,19 +13,9 @@ namespace towdb::statistics {
 namespace {
 
 std::vector<double> read_sea_levels() {
-  const auto path = test::source_dir() / "tests/data/statistics/portpirie.csv";
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << "cannot open " << path;
-  std::vector<double> levels;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    levels.push_back(std::stod(line.substr(line.find(',') + 1)));
+  std::vector<double> levels;  // columns: year, level_m
+  for (const auto& f : test::read_csv_rows(test::source_dir() / "tests/data/statistics/portpirie.csv")) {
+    levels.push_back(std::stod(f.at(1)));
   }
   return levels;
 }

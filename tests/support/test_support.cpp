@@ -8,6 +8,8 @@
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <stdexcept>
+#include <utility>
 
 #include <sys/wait.h>
 
@@ -93,6 +95,25 @@ CommandResult run_towdb(const std::string& args, const std::string& stdin_text) 
   r.err = read_file(err);
   std::filesystem::remove_all(dir);
   return r;
+}
+
+std::vector<std::vector<std::string>> read_csv_rows(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open test data file " + path.string());
+  std::vector<std::vector<std::string>> rows;
+  bool header = true;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header) {
+      header = false;
+      continue;
+    }
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+    rows.push_back(std::move(cells));
+  }
+  return rows;
 }
 
 }  // namespace towdb::test

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -34,6 +35,11 @@ std::filesystem::path make_temp_dir(const std::string& prefix);
 // Runs fn and expects a towdb::InputError whose message contains `needle`
 // (the field name, usually); any other outcome is a test failure.
 void expect_input_error(const std::function<void()>& fn, const std::string& needle);
+
+// The comma-separated cells of each row of a test data file after its header
+// row; empty lines and lines starting with '#' (provenance notes) are skipped.
+// Throws std::runtime_error when the file cannot be opened.
+std::vector<std::vector<std::string>> read_csv_rows(const std::filesystem::path& path);
 
 struct CommandResult {
   int exit_code = -1;

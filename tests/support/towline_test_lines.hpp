@@ -8,8 +8,6 @@
 #define TOWDB_TESTS_SUPPORT_TOWLINE_TEST_LINES_HPP
 
 #include <charconv>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -33,20 +31,10 @@ inline double parse_number(const std::string& text) {
 // The component named `name` from thesis_towline_components.csv, in SI.
 inline model::TowlineComponent thesis_component(const std::string& name) {
   const auto path = source_dir() / "tests/data/towline/thesis_towline_components.csv";
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open " + path.string());
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
+  for (const auto& f : read_csv_rows(path)) {
+    if (f.size() != 9) {
+      throw std::runtime_error("bad row in " + path.string() + " (" + std::to_string(f.size()) + " cells, 9 expected)");
     }
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) f.push_back(cell);
-    if (f.size() != 9) throw std::runtime_error("bad row in " + path.string() + ": " + line);
     if (f[0] != name) continue;
     model::TowlineComponent c;
     c.name = f[0];
