@@ -43,7 +43,8 @@ trap 'rm -f "$log"; [ -n "$cleanup" ] && rm -rf "$cleanup"' EXIT
 
 echo "machine: $(uname -m), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo)"
 echo "sweep:   $sweep ($threads threads)"
-/usr/bin/time -v "$towdb" build --sweep "$sweep" --db "$db" --threads "$threads" $resume 2> "$log"
+rc=0
+/usr/bin/time -v "$towdb" build --sweep "$sweep" --db "$db" --threads "$threads" $resume 2> "$log" || rc=$?
 wall=$(grep 'Elapsed (wall clock)' "$log" | awk '{print $NF}')
 user=$(grep 'User time' "$log" | awk '{print $NF}')
 sys=$(grep 'System time' "$log" | awk '{print $NF}')
@@ -53,3 +54,8 @@ echo "wall:    $wall (h:mm:ss or m:ss)"
 echo "cpu:     user ${user} s, system ${sys} s"
 echo "memory:  peak RSS $((rss_kb / 1024)) MiB"
 echo "results: ${cases} stored"
+if [ "$rc" -ne 0 ]; then
+  echo "towdb build exited with $rc (failed cases: towdb status --db $db)"
+  grep -v -E '^\s+(Command being timed|User time|System time|Percent of CPU|Elapsed|Average|Maximum resident|Major|Minor|Voluntary|Involuntary|Swaps|File system|Socket|Signals|Page size|Exit status)' "$log" >&2 || true
+fi
+exit "$rc"
