@@ -2,8 +2,6 @@
 // (T-ATF wire with 90 ft chain pendant, Desroches 1997 Appendix A; nylon
 // hawser estimate; tests/data/towline/thesis_towline_components.csv).
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -28,21 +26,10 @@ TEST(TowlineThesis, CatenaryMatchesIndependentReference) {
   // central difference of two bisection solutions: 1e-5 relative.
   constexpr double kReferenceRelTol = 1e-8;
   constexpr double kReferenceStiffnessRelTol = 1e-5;
-  std::ifstream in(test::source_dir() / "tests/data/towline/catenary_reference.csv");
-  ASSERT_TRUE(in);
-  std::string line;
   int rows = 0;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) f.push_back(cell);
-    ASSERT_EQ(f.size(), 7u) << line;
+  for (const auto& f : test::read_csv_rows(test::source_dir() / "tests/data/towline/catenary_reference.csv")) {
+    ASSERT_EQ(f.size(), 7u) << "row " << rows + 1;
+    const std::string line = f[0] + "," + f[1] + "," + f[2];  // names the row in failures
     const Catenary cat = Catenary::solve(test::thesis_towline(f[0], test::parse_number(f[1])),
                                          test::thesis_tow_points(), units::lbf_to_n(test::parse_number(f[2])));
     EXPECT_REL_CLOSE(units::m_to_ft(cat.span_m()), test::parse_number(f[3]), kReferenceRelTol) << line;
