@@ -102,10 +102,21 @@ struct State {
   double x1, v1, x7, v7;
 };
 
+// The four samples around the interval [i, i + 1] of a periodic record of n
+// samples: i - 1, i, i + 1, i + 2, wrapped (computed once per interval, without
+// integer division).
+struct Stencil {
+  std::size_t im1, i, i1, i2;
+};
+
+inline Stencil stencil(std::size_t i, std::size_t n) {
+  const std::size_t i1 = i + 1 == n ? 0 : i + 1;
+  return {i == 0 ? n - 1 : i - 1, i, i1, i1 + 1 == n ? 0 : i1 + 1};
+}
+
 // Catmull-Rom interpolation of a periodic record at sample i + s, s in [0, 1].
-inline double interpolate(const std::vector<double>& y, std::size_t i, double s) {
-  const std::size_t n = y.size();
-  const double y0 = y[(i + n - 1) % n], y1 = y[i], y2 = y[(i + 1) % n], y3 = y[(i + 2) % n];
+inline double interpolate(const std::vector<double>& y, const Stencil& c, double s) {
+  const double y0 = y[c.im1], y1 = y[c.i], y2 = y[c.i1], y3 = y[c.i2];
   const double s2 = s * s, s3 = s2 * s;
   return 0.5 * ((2.0 * y1) + (-y0 + y2) * s + (2.0 * y0 - 5.0 * y1 + 4.0 * y2 - y3) * s2 +
                 (-y0 + 3.0 * y1 - 3.0 * y2 + y3) * s3);
@@ -116,14 +127,18 @@ struct Forcing {
 };
 
 // Catmull-Rom at s = 1/2: (-y0 + 9 y1 + 9 y2 - y3) / 16.
-inline double midpoint(const std::vector<double>& y, std::size_t i) {
-  const std::size_t n = y.size();
-  return (9.0 * (y[i] + y[(i + 1) % n]) - y[(i + n - 1) % n] - y[(i + 2) % n]) * 0.0625;
+inline double midpoint(const std::vector<double>& y, const Stencil& c) {
+  return (9.0 * (y[c.i] + y[c.i1]) - y[c.im1] - y[c.i2]) * 0.0625;
 }
 
-inline Forcing forcing_at(const DayForcing& f, std::size_t i, double s) {
-  return {interpolate(f.tug_force_n, i, s), interpolate(f.tow_force_n, i, s), interpolate(f.xi_ns_m, i, s),
-          interpolate(f.xi_ns_dot_m_s, i, s)};
+inline Forcing forcing_at(const DayForcing& f, const Stencil& c, double s) {
+  return {interpolate(f.tug_force_n, c, s), interpolate(f.tow_force_n, c, s), interpolate(f.xi_ns_m, c, s),
+          interpolate(f.xi_ns_dot_m_s, c, s)};
+}
+
+inline Forcing midpoint_forcing(const DayForcing& f, const Stencil& c) {
+  return {midpoint(f.tug_force_n, c), midpoint(f.tow_force_n, c), midpoint(f.xi_ns_m, c),
+          midpoint(f.xi_ns_dot_m_s, c)};
 }
 
 inline State axpy(const State& y, double h, const State& k) {
@@ -167,9 +182,10 @@ DayStatistics integrate_day(const SurgeParameters& p, const DayForcing& f, const
     return detail::Forcing{f.tug_force_n[i], f.tow_force_n[i], f.xi_ns_m[i], f.xi_ns_dot_m_s[i]};
   };
 
+  std::size_t i = start;
   for (std::size_t step = 0; step < total; ++step) {
-    const std::size_t i = (start + step) % n;
-    const std::size_t i1 = (i + 1) % n;
+    const detail::Stencil c = detail::stencil(i, n);
+    const std::size_t i1 = c.i1;
     const bool recording = step >= warmup_samples;
     // Local stiffness and damping of the line at the start of the interval.
     const detail::Forcing g0 = sample(i);
@@ -185,10 +201,8 @@ DayStatistics integrate_day(const SurgeParameters& p, const DayForcing& f, const
     const double h = dt / m;
     detail::Forcing ga = g0;
     for (int j = 0; j < m; ++j) {
-      const detail::Forcing gm = m == 1 ? detail::Forcing{detail::midpoint(f.tug_force_n, i), detail::midpoint(f.tow_force_n, i),
-                                                          detail::midpoint(f.xi_ns_m, i), detail::midpoint(f.xi_ns_dot_m_s, i)}
-                                        : detail::forcing_at(f, i, (j + 0.5) / m);
-      const detail::Forcing gb = j + 1 == m ? sample(i1) : detail::forcing_at(f, i, static_cast<double>(j + 1) / m);
+      const detail::Forcing gm = m == 1 ? detail::midpoint_forcing(f, c) : detail::forcing_at(f, c, (j + 0.5) / m);
+      const detail::Forcing gb = j + 1 == m ? sample(i1) : detail::forcing_at(f, c, static_cast<double>(j + 1) / m);
       double tau = 0.0, unused = 0.0;
       const State k1 = derivative(y, ga, &tau);
       if (recording) {
@@ -217,6 +231,7 @@ DayStatistics integrate_day(const SurgeParameters& p, const DayForcing& f, const
       ga = gb;
     }
     stats.substeps += m;
+    i = i1;
   }
   return stats;
 }

@@ -19,13 +19,6 @@ std::array<double, PolynomialCoefficients::kCount> monomials(double x, double v)
 
 }  // namespace
 
-double PolynomialCoefficients::evaluate_n(double xi_m, double xi_dot_m_s) const {
-  const auto m = monomials(xi_m, xi_dot_m_s);
-  double tau = 0.0;
-  for (int k = 0; k < kCount; ++k) tau += a[static_cast<std::size_t>(k)] * m[static_cast<std::size_t>(k)];
-  return tau;
-}
-
 PolynomialFit fit_polynomial(const std::vector<TensionSample>& samples,
                              double max_dynamic_tension_n, double min_dynamic_tension_n,
                              SlackFit slack) {

@@ -6,6 +6,7 @@
 #define TOWDB_TOWLINE_POLYNOMIAL_HPP
 
 #include <array>
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -32,8 +33,16 @@ struct PolynomialCoefficients {
   double a12() const { return a[7]; }  // [N s^2/m^3]
   double a03() const { return a[8]; }  // [N s^3/m^3]
 
-  // EQ-TOWLINE-11, without any slack or breaking-strength limit [N].
-  double evaluate_n(double xi_m, double xi_dot_m_s) const;
+  // EQ-TOWLINE-11, without any slack or breaking-strength limit [N]. Inline:
+  // the surge integrator calls it four times per RK4 step. The terms are summed
+  // in coefficient order, which fixes the rounding (results are bit-reproducible).
+  double evaluate_n(double xi_m, double xi_dot_m_s) const {
+    const double x = xi_m, v = xi_dot_m_s;
+    const std::array<double, kCount> m = {x, v, x * x, x * v, v * v, x * x * x, x * x * v, x * v * v, v * v * v};
+    double tau = 0.0;
+    for (std::size_t k = 0; k < m.size(); ++k) tau += a[k] * m[k];
+    return tau;
+  }
 };
 
 struct PolynomialFit {
