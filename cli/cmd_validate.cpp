@@ -162,8 +162,7 @@ void write_scatter_plot(const fs::path& png, const std::vector<validation::CaseO
     ++k;
   }
   s << "\n";
-  run_gnuplot(s.str());
-  fs::remove_all(dir);
+  run_gnuplot_with_data(s.str(), dir);
 }
 
 int run_validate(const Context& ctx, const ValidateArgs& a) {

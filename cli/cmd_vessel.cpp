@@ -15,7 +15,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -105,8 +104,7 @@ struct Damping {
 };
 
 void write_vessel_plot(const std::string& png_path, const std::string& title, const std::vector<Row>& rows) {
-  const auto dir = std::filesystem::temp_directory_path() / ("towdb-vessel-" + std::to_string(std::random_device{}()));
-  std::filesystem::create_directories(dir);
+  const auto dir = make_plot_data_dir("towdb-vessel");
   {
     std::ofstream d(dir / "rao.dat");
     for (const Row& r : rows) {
@@ -127,13 +125,7 @@ void write_vessel_plot(const std::string& png_path, const std::string& title, co
       "set title 'Added resistance operator'\nset ylabel 'R_{aw} / {/Symbol z}_a^2 (lbf/ft^2)'\n"
       "plot '" + f + "' using 1:4 with linespoints pt 7 ps 0.5 lw 2 title ''\n"
       "unset multiplot\n";
-  try {
-    run_gnuplot(script);
-  } catch (...) {
-    std::filesystem::remove_all(dir);
-    throw;
-  }
-  std::filesystem::remove_all(dir);
+  run_gnuplot_with_data(script, dir);
 }
 
 int run_vessel(const Context& ctx, const VesselArgs& a) {

@@ -27,10 +27,25 @@ void run_gnuplot(const std::string& script) {
   if (status != 0) throw Error("gnuplot failed (is gnuplot-nox installed?): " + output);
 }
 
+std::filesystem::path make_plot_data_dir(const std::string& prefix) {
+  const auto dir = std::filesystem::temp_directory_path() / (prefix + "-" + std::to_string(std::random_device{}()));
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+void run_gnuplot_with_data(const std::string& script, const std::filesystem::path& data_dir) {
+  try {
+    run_gnuplot(script);
+  } catch (...) {
+    std::filesystem::remove_all(data_dir);
+    throw;
+  }
+  std::filesystem::remove_all(data_dir);
+}
+
 void write_simulation_plot(const std::string& png_path, const std::vector<double>& maxima_kips, double u,
                            double alpha, const std::vector<double>& trace_kips, double dt_s, int day) {
-  const auto dir = std::filesystem::temp_directory_path() / ("towdb-plot-" + std::to_string(std::random_device{}()));
-  std::filesystem::create_directories(dir);
+  const auto dir = make_plot_data_dir("towdb-plot");
   // Histogram of the daily maxima as a density.
   const auto [lo_it, hi_it] = std::minmax_element(maxima_kips.begin(), maxima_kips.end());
   const double lo = *lo_it, hi = *hi_it;
@@ -78,13 +93,7 @@ void write_simulation_plot(const std::string& png_path, const std::vector<double
       "set xlabel 'time (min)'\nset ylabel 'dynamic tension (kips)'\n"
       "plot '" + d + "/trace.dat' using 1:2 with lines lw 1 title ''\n"
       "unset multiplot\n";
-  try {
-    run_gnuplot(script);
-  } catch (...) {
-    std::filesystem::remove_all(dir);
-    throw;
-  }
-  std::filesystem::remove_all(dir);
+  run_gnuplot_with_data(script, dir);
 }
 
 }  // namespace towdb::cli

@@ -3,6 +3,7 @@
 #ifndef TOWDB_CLI_PLOT_HPP
 #define TOWDB_CLI_PLOT_HPP
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,13 @@ void write_simulation_plot(const std::string& png_path, const std::vector<double
 
 // Runs a gnuplot script; throws Error with gnuplot's message on failure.
 void run_gnuplot(const std::string& script);
+
+// A fresh, empty temporary directory for one plot's data files.
+std::filesystem::path make_plot_data_dir(const std::string& prefix);
+
+// run_gnuplot, then removes data_dir (the plot's data files) whether gnuplot
+// succeeded or not.
+void run_gnuplot_with_data(const std::string& script, const std::filesystem::path& data_dir);
 
 }  // namespace towdb::cli
 
