@@ -18,13 +18,6 @@
 namespace towdb::test {
 namespace {
 
-std::string read(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
 // Thesis Appendix C run 206 (T-ATF / FFG 7, 9 kt, 20 kt wind, head seas,
 // 800 ft fiber, 79,000 lbf: 98.5 kips), and the same row with a frigate named
 // as the tug (parses, but the case cannot run).
@@ -41,11 +34,11 @@ TEST(CliValidate, ReportsFailuresAndResumes) {  // cli-validate-1, cli-validate-
   const std::string args = base + " --min-days 10";
   const CommandResult first = run_towdb(args);
   ASSERT_EQ(first.exit_code, 0) << first.err;
-  const std::string report = read(dir / "out" / "report.md");
+  const std::string report = test::read_text(dir / "out" / "report.md");
   EXPECT_NE(report.find("## Targets"), std::string::npos);
   EXPECT_NE(report.find("| 9999 | FFG 7 | FFG 7 |"), std::string::npos) << report;
   EXPECT_NE(report.find("not a tug"), std::string::npos) << report;
-  const std::string journal = read(dir / "out" / "cases.csv");
+  const std::string journal = test::read_text(dir / "out" / "cases.csv");
   const auto ok_line = journal.find("\n206,T-ATF 166,FFG 7,");
   ASSERT_NE(ok_line, std::string::npos) << journal;
   const std::string line206 = journal.substr(ok_line + 1, journal.find('\n', ok_line + 1) - ok_line - 1);
@@ -54,7 +47,7 @@ TEST(CliValidate, ReportsFailuresAndResumes) {  // cli-validate-1, cli-validate-
   const CommandResult second = run_towdb(args);
   ASSERT_EQ(second.exit_code, 0) << second.err;
   EXPECT_NE(second.err.find("2 cases (1 from"), std::string::npos) << second.err;
-  const std::string journal2 = read(dir / "out" / "cases.csv");
+  const std::string journal2 = test::read_text(dir / "out" / "cases.csv");
   // The ok line is reused verbatim (same tension digits and run time).
   EXPECT_NE(journal2.find(line206), std::string::npos) << journal2;
 

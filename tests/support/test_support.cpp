@@ -24,13 +24,14 @@ std::string num(double x) {
   os << x;
   return os.str();
 }
-std::string read_file(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
+}  // namespace
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
   std::ostringstream os;
   os << in.rdbuf();
   return os.str();
 }
-}  // namespace
 
 ::testing::AssertionResult RelClose(double actual, double expected, RelTol tol) {
   const double scale = std::max(std::abs(actual), std::abs(expected));
@@ -91,8 +92,8 @@ CommandResult run_towdb(const std::string& args, const std::string& stdin_text) 
   const int status = std::system(cmd.c_str());
   CommandResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = read_file(out);
-  r.err = read_file(err);
+  r.out = read_text(out);
+  r.err = read_text(err);
   std::filesystem::remove_all(dir);
   return r;
 }

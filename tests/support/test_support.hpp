@@ -36,6 +36,9 @@ std::filesystem::path make_temp_dir(const std::string& prefix);
 // (the field name, usually); any other outcome is a test failure.
 void expect_input_error(const std::function<void()>& fn, const std::string& needle);
 
+// The whole content of a file, byte for byte ("" when it cannot be read).
+std::string read_text(const std::filesystem::path& path);
+
 // The comma-separated cells of each row of a test data file after its header
 // row; empty lines and lines starting with '#' (provenance notes) are skipped.
 // Throws std::runtime_error when the file cannot be opened.

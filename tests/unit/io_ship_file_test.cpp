@@ -23,14 +23,7 @@
 namespace towdb::io {
 namespace {
 
-std::string read(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
-std::string barge_text() { return read(test::source_dir() / "tests/data/io/box-barge.toml"); }
+std::string barge_text() { return test::read_text(test::source_dir() / "tests/data/io/box-barge.toml"); }
 
 // Replaces the first occurrence of `from` by `to`; fails the test when absent.
 std::string mutate(std::string text, const std::string& from, const std::string& to) {

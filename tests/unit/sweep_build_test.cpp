@@ -40,13 +40,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
 struct Fixture {
   fs::path dir = make_temp_dir("towdb-sweep-build");
   io::ShipCatalog catalog = io::ShipCatalog::load(source_dir() / "ships");
@@ -215,17 +208,17 @@ TEST(SweepBuild, DryRunPlanWritesNothing) {  // sweep-build-5
   ASSERT_EQ(static_cast<int>(plan.size()), kSmallSweepCases);
   for (const auto& p : plan) EXPECT_EQ(p.state, sweep::CaseState::kNew);
   f.build(db, 1, make_test_runner());
-  const std::string before = read_bytes(db);
+  const std::string before = test::read_text(db);
   plan = sweep::plan_build(db, f.cases, f.catalog, kVersion);
   for (const auto& p : plan) EXPECT_EQ(p.state, sweep::CaseState::kDone);
   plan = sweep::plan_build(db, f.cases, f.catalog, "99.0.0-test");
   for (const auto& p : plan) EXPECT_EQ(p.state, sweep::CaseState::kChanged);
-  EXPECT_EQ(read_bytes(db), before);
+  EXPECT_EQ(test::read_text(db), before);
 }
 
 void expect_refused(Fixture& f, const fs::path& db, const std::string& message_part,
                     sweep::BuildOptions o = {}) {
-  const std::string before = fs::exists(db) ? read_bytes(db) : "";
+  const std::string before = fs::exists(db) ? test::read_text(db) : "";
   try {
     f.build(db, 1, make_test_runner(), o);
     ADD_FAILURE() << "no error for " << db;
@@ -233,7 +226,7 @@ void expect_refused(Fixture& f, const fs::path& db, const std::string& message_p
     EXPECT_NE(std::string(e.what()).find(message_part), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find(db.string()), std::string::npos) << "names the file: " << e.what();
   }
-  EXPECT_EQ(fs::exists(db) ? read_bytes(db) : "", before) << "the file was changed";
+  EXPECT_EQ(fs::exists(db) ? test::read_text(db) : "", before) << "the file was changed";
 }
 
 TEST(SweepBuild, BadDatabasesAreRefusedUntouched) {  // sweep-build-6

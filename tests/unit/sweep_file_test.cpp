@@ -29,13 +29,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
 const io::ShipCatalog& catalog() {
   static const io::ShipCatalog c = io::ShipCatalog::load(source_dir() / "ships");
   return c;

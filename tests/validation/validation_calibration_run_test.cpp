@@ -25,13 +25,6 @@
 namespace towdb::test {
 namespace {
 
-std::string read(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
-
 std::string env_or(const char* name, const std::string& fallback) {
   const char* v = std::getenv(name);
   return v && *v ? std::string(v) : fallback;
@@ -56,7 +49,7 @@ TEST(ValidationCalibrationRun, EveryThesisCaseHasAnOutcomeAndTheReportIsWritten)
                                     " --threads " + env_or("TOWDB_VALIDATION_THREADS", "1"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::cout << r.out;
-  const std::string report = read(out / "report.md");
+  const std::string report = test::read_text(out / "report.md");
   ASSERT_FALSE(report.empty());
   EXPECT_NE(report.find("## Targets"), std::string::npos);
   EXPECT_NE(report.find("## By heading"), std::string::npos);
@@ -65,7 +58,7 @@ TEST(ValidationCalibrationRun, EveryThesisCaseHasAnOutcomeAndTheReportIsWritten)
   // Failed cases are listed in the report (a known set: docs/validation.md);
   // they must never abort the run, which the line count below checks.
   // One journal line per case plus the header.
-  const std::string journal = read(out / "cases.csv");
+  const std::string journal = test::read_text(out / "cases.csv");
   std::size_t lines = 0;
   for (char c : journal) lines += c == '\n' ? 1 : 0;
   EXPECT_EQ(lines, rows + 1);
