@@ -6,9 +6,11 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
+#include "common/error.hpp"
 #include "common/units.hpp"
 #include "output.hpp"
 #include "sweep/grid_tension.hpp"
+#include "sweep/simulation_runner.hpp"
 
 namespace towdb::cli {
 
@@ -24,6 +26,7 @@ struct MeanTensionArgs {
   double margin = 0.10;
   std::string propeller = "locked";
   double sea_head_lbf = 0.0;
+  std::string sea_resistance = "given";  // given (--sea-head-lbf) | strip-theory | strip-theory-head
   bool json = false;
 };
 
@@ -41,15 +44,32 @@ int run_mean_tension(const Context& ctx, const MeanTensionArgs& a) {
                                             : propulsion::TowPropellerState::kRemoved;
   model.wind = sweep::MeanTensionWind::kHeading;  // the heading given here is the wind's and the sea's
   const double heading_rad = units::deg_to_rad(a.heading_deg);
-  // EQ-PROPULSION-11 (thesis eq. 2.9): a head-seas value corrected for direction.
-  const double sea_n = propulsion::direction_corrected_added_resistance_n(units::lbf_to_n(a.sea_head_lbf), heading_rad);
+  double sea_n = 0.0;
+  std::string sea_note;
+  if (a.sea_resistance == "given") {
+    // EQ-PROPULSION-11 (thesis eq. 2.9): a head-seas value corrected for direction.
+    sea_n = propulsion::direction_corrected_added_resistance_n(units::lbf_to_n(a.sea_head_lbf), heading_rad);
+    sea_note = a.sea_head_lbf > 0.0 ? "head-seas value given, corrected for direction (thesis eq. 2.9)"
+                                    : "0: no sea-state added resistance given (--sea-head-lbf or --sea-resistance)";
+  } else {
+    // Thesis eq. 2.2 by strip theory in the fully developed sea of the wind, as
+    // the sweep's sea_resistance setting computes it (EQ-SWEEP-1).
+    if (a.sea_head_lbf > 0.0) {
+      throw InputError("--sea-head-lbf = " + fmt(a.sea_head_lbf) + " is given with --sea-resistance " +
+                       a.sea_resistance + "; allowed: one source of the sea-state resistance");
+    }
+    sweep::SeaSpec sea;
+    sea.wind_kt = a.wind_kt;
+    const bool head = a.sea_resistance == "strip-theory-head";
+    sea_n = a.wind_kt > 0.0 ? sweep::strip_theory_sea_resistance(simulation::CaseOptions{})(
+                                  tow, a.speed_kt, sea, head ? 180.0 : a.heading_deg)
+                            : 0.0;
+    sea_note = head ? "strip theory (thesis eq. 2.2), head seas" : "strip theory (thesis eq. 2.2) at this heading";
+  }
   const propulsion::MeanTensionBreakdown b =
       sweep::calculated_mean_tension(tow, a.speed_kt, a.wind_kt, a.heading_deg, sea_n, model);
   const double total_lbf = units::n_to_lbf(b.total_n);
   const double lower_lbf = sweep::hull_half_propeller_tension_lbf(tow, a.speed_kt, model);
-  const char* sea_note = a.sea_head_lbf > 0.0
-                             ? "head-seas value given, corrected for direction (thesis eq. 2.9)"
-                             : "0: no sea-state added resistance given (--sea-head-lbf); strip-theory value not wired";
   if (a.json) {
     ordered_json j;
     j["tow"] = tow.name;
@@ -110,6 +130,10 @@ void add_mean_tension_command(CLI::App& app, Context& ctx) {
   c->add_option("--sea-head-lbf", a->sea_head_lbf,
                 "Head-seas added resistance [lbf] (Towing Manual curve), corrected for heading; default 0")
       ->check(CLI::Range(0.0, 1.0e6));
+  c->add_option("--sea-resistance", a->sea_resistance,
+                "Sea-state added resistance: given (--sea-head-lbf, default), strip-theory (at --heading-deg) or "
+                "strip-theory-head (head seas, as the bundled sweep)")
+      ->check(CLI::IsMember({"given", "strip-theory", "strip-theory-head"}));
   c->add_flag("--json", a->json, "JSON output");
   c->callback([&ctx, a] { ctx.action = [&ctx, a] { return run_mean_tension(ctx, *a); }; });
 }

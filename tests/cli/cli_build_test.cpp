@@ -254,6 +254,26 @@ TEST(CliBuild, MeanTensionBreakdown) {  // cli-build-6
                 .at("sea_lbf")
                 .get<double>(),
             0.0);
+  // Strip-theory sea resistance (thesis eq. 2.2): positive in head seas; the
+  // "head" variant uses 180 deg whatever the heading; zero aft of beam (EQ-AR-4).
+  const double rs_head = mean_tension("--tow FFG7 --speed-kt 5 --wind-kt 30 --heading-deg 180 --sea-resistance "
+                                      "strip-theory")
+                             .at("sea_lbf")
+                             .get<double>();
+  EXPECT_GT(rs_head, 0.0);
+  EXPECT_EQ(mean_tension("--tow FFG7 --speed-kt 5 --wind-kt 30 --heading-deg 60 --sea-resistance strip-theory-head")
+                .at("sea_lbf")
+                .get<double>(),
+            rs_head);
+  EXPECT_EQ(mean_tension("--tow FFG7 --speed-kt 5 --wind-kt 30 --heading-deg 0 --sea-resistance strip-theory")
+                .at("sea_lbf")
+                .get<double>(),
+            0.0);
+  const CommandResult both = run_towdb(
+      "mean-tension --tow FFG7 --speed-kt 5 --wind-kt 30 --heading-deg 180 --sea-resistance strip-theory "
+      "--sea-head-lbf 1000");
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("--sea-head-lbf"), std::string::npos) << both.err;
   const CommandResult text = run_towdb("mean-tension --tow FFG7 --speed-kt 5 --wind-kt 20 --heading-deg 180");
   EXPECT_EQ(text.exit_code, 0);
   EXPECT_NE(text.out.find("sweep grid tensions (thesis ch. 5)"), std::string::npos) << text.out;
