@@ -3,9 +3,10 @@
 // 2,000 ft of wire at 50,000 lbf, 9 kt, 20 kt wind, following seas.
 // Each benchmark also prints a value of its result as a counter, so a run
 // shows that the work was done (after SQLite's speedtest1 --verify).
-#include <benchmark/benchmark.h>
-
+#include <array>
 #include <vector>
+
+#include <benchmark/benchmark.h>
 
 #include "common/units.hpp"
 #include "io/ship_file.hpp"
@@ -116,6 +117,26 @@ void BM_DayIntegration(benchmark::State& state) {
   state.counters["substeps"] = static_cast<double>(substeps);
 }
 BENCHMARK(BM_DayIntegration)->Unit(benchmark::kMillisecond);
+
+// What run_case does: kLockstepDays days integrated together; the time is per
+// group, items/s counts days.
+void BM_DayIntegrationLockStep(benchmark::State& state) {
+  const auto m = prepared();
+  std::array<simulation::DayForcing, simulation::kLockstepDays> forcing;
+  std::array<const simulation::DayForcing*, simulation::kLockstepDays> days;
+  for (std::size_t l = 0; l < forcing.size(); ++l) {
+    forcing[l] = simulation::day_forcing(*m, 1, l);
+    days[l] = &forcing[l];
+  }
+  double max_kips = 0.0;
+  for (auto _ : state) {
+    const auto s = simulation::simulate_days(*m, days, simulation::IntegratorOptions{});
+    max_kips = units::n_to_kips(s[0].max_tension_n);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(simulation::kLockstepDays));
+  state.counters["max_kips_day0"] = max_kips;
+}
+BENCHMARK(BM_DayIntegrationLockStep)->Unit(benchmark::kMillisecond);
 
 void BM_GumbelFit500(benchmark::State& state) {
   std::vector<double> x;

@@ -1,6 +1,7 @@
 #include "simulation/case_runner.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -38,6 +39,7 @@ constexpr double kWaveDampingSpeedStep_m_s = units::ft_s_to_m_s(1.0);
 // Record-series indices.
 enum Linear : std::size_t { kF1Tug = 0, kF1Tow = 1, kXiNs = 2, kXiNsDot = 3, kLinearCount = 4 };
 enum Drift : std::size_t { kF2Tug = 0, kF2Tow = 1, kDriftCount = 2 };
+
 
 // The polynomial towline (towline EQ-TOWLINE-11/-13 with the slack limit) in
 // the form simulation/surge.hpp integrates.
@@ -422,6 +424,17 @@ DayStatistics simulate_day(const CaseModel& m, const DayForcing& forcing, const 
   return integrate_day(m.surge, forcing, law, options, trace);
 }
 
+std::array<DayStatistics, kLockstepDays> simulate_days(const CaseModel& m,
+                                                      const std::array<const DayForcing*, kLockstepDays>& forcing,
+                                                      const IntegratorOptions& options) {
+  if (m.options.tension_law == TensionLaw::kLinear) {
+    const LinearLaw law{m.fit->coefficients().a10(), m.fit->coefficients().a01()};
+    return integrate_days(m.surge, forcing, law, options);
+  }
+  const PolynomialLaw law(m.fit.get(), m.options.above_breaking);
+  return integrate_days(m.surge, forcing, law, options);
+}
+
 double linear_tension_variance_n2(const CaseInputs& inputs, const CaseOptions& options) {
   const auto m = prepare_case(inputs, options);
   const auto& comps = m->synthesizer->plan().components();
@@ -457,28 +470,48 @@ CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options) {
   std::vector<long> substeps(static_cast<std::size_t>(days));
   std::mutex progress_mutex;
   int done = 0;
-  std::vector<std::unique_ptr<DayScratch>> scratch(static_cast<std::size_t>(workers(options.num_threads)));
-  parallel_for_workers(0, days, options.num_threads, [&](std::int64_t d, int worker) {
-    const std::size_t i = static_cast<std::size_t>(d);
-    auto& s = scratch[static_cast<std::size_t>(worker)];
-    if (!s) s = std::make_unique<DayScratch>(DayScratch{m->synthesizer->make_workspace(), {}});
-    auto t = Clock::now();
-    fill_forcing(*m, inputs.seed, static_cast<std::uint64_t>(d), *s);
-    synth_s[i] = seconds_since(t);
-    t = Clock::now();
-    const DayStatistics st = simulate_day(*m, s->forcing, options.integrator);
-    integ_s[i] = seconds_since(t);
-    DayResult& out = r.days[i];
-    out.max_dynamic_tension_n = st.max_tension_n;
-    out.slack_time_s = st.slack_time_s;
-    out.snatch_events = st.snatch_events;
-    const double n = static_cast<double>(st.samples);
-    out.tension_mean_n = st.tension_sum_n / n;
-    out.tension_variance_n2 = std::max(0.0, st.tension_sum_sq_n2 / n - out.tension_mean_n * out.tension_mean_n);
-    substeps[i] = st.substeps;
+  // Days in groups of kLockstepDays consecutive days, each group's surge
+  // equations integrated in lock step (integrate_days): the grouping depends
+  // only on the day numbers, and a day's result not even on its group.
+  using Group = std::array<std::unique_ptr<DayScratch>, kLockstepDays>;
+  std::vector<Group> scratch(static_cast<std::size_t>(workers(options.num_threads)));
+  const int groups = (days + static_cast<int>(kLockstepDays) - 1) / static_cast<int>(kLockstepDays);
+  parallel_for_workers(0, groups, options.num_threads, [&](std::int64_t g, int worker) {
+    const std::size_t first = static_cast<std::size_t>(g) * kLockstepDays;
+    const std::size_t count = std::min(kLockstepDays, static_cast<std::size_t>(days) - first);
+    Group& s = scratch[static_cast<std::size_t>(worker)];
+    for (std::size_t l = 0; l < count; ++l) {
+      if (!s[l]) s[l] = std::make_unique<DayScratch>(DayScratch{m->synthesizer->make_workspace(), {}});
+      const auto t = Clock::now();
+      fill_forcing(*m, inputs.seed, static_cast<std::uint64_t>(first + l), *s[l]);
+      synth_s[first + l] = seconds_since(t);
+    }
+    const auto t = Clock::now();
+    std::array<DayStatistics, kLockstepDays> st;
+    if (count == kLockstepDays) {
+      std::array<const DayForcing*, kLockstepDays> forcing;
+      for (std::size_t l = 0; l < count; ++l) forcing[l] = &s[l]->forcing;
+      st = simulate_days(*m, forcing, options.integrator);
+    } else {
+      for (std::size_t l = 0; l < count; ++l) st[l] = simulate_day(*m, s[l]->forcing, options.integrator);
+    }
+    const double integration_s = seconds_since(t) / static_cast<double>(count);
+    for (std::size_t l = 0; l < count; ++l) {
+      const std::size_t i = first + l;
+      integ_s[i] = integration_s;
+      DayResult& out = r.days[i];
+      out.max_dynamic_tension_n = st[l].max_tension_n;
+      out.slack_time_s = st[l].slack_time_s;
+      out.snatch_events = st[l].snatch_events;
+      const double n = static_cast<double>(st[l].samples);
+      out.tension_mean_n = st[l].tension_sum_n / n;
+      out.tension_variance_n2 =
+          std::max(0.0, st[l].tension_sum_sq_n2 / n - out.tension_mean_n * out.tension_mean_n);
+      substeps[i] = st[l].substeps;
+    }
     if (options.progress) {
       std::lock_guard<std::mutex> lock(progress_mutex);
-      options.progress(++done, days);
+      for (std::size_t l = 0; l < count; ++l) options.progress(++done, days);
     }
   });
   for (int d = 0; d < days; ++d) {

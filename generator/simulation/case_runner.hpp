@@ -34,6 +34,7 @@
 #ifndef TOWDB_SIMULATION_CASE_RUNNER_HPP
 #define TOWDB_SIMULATION_CASE_RUNNER_HPP
 
+#include <array>
 #include <complex>
 #include <cstdint>
 #include <functional>
@@ -198,6 +199,16 @@ DayForcing day_forcing(const CaseModel& model, std::uint64_t seed, std::uint64_t
 // Simulates one day of a prepared case; `trace` as in integrate_day.
 DayStatistics simulate_day(const CaseModel& model, const DayForcing& forcing, const IntegratorOptions& options,
                            std::vector<double>* trace = nullptr);
+
+// Days run_case integrates together (surge.hpp integrate_days): four overlap
+// the RK4 dependency chains best on the 2-core CI machine (bench/,
+// BM_DayIntegrationLockStep: 2 and 8 are slower).
+inline constexpr std::size_t kLockstepDays = 4;
+// kLockstepDays days of a prepared case in lock step; day l's statistics equal
+// simulate_day(model, *forcing[l], options) bit for bit.
+std::array<DayStatistics, kLockstepDays> simulate_days(const CaseModel& model,
+                                                      const std::array<const DayForcing*, kLockstepDays>& forcing,
+                                                      const IntegratorOptions& options);
 
 }  // namespace towdb::simulation
 

@@ -4,8 +4,12 @@
 //   surge-2  step-size convergence: halving the forcing interval changes the
 //            maximum by less than the RK4 error bound.
 //   surge-3  a slack-prone bilinear line: slack time and snatch events counted.
+//   surge-4  integrate_days (lock step) equals integrate_day on each day alone,
+//            bit for bit, also when the days need different substep counts.
+#include <array>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -158,6 +162,59 @@ TEST(SurgeIntegrator, SlackLineCountsSlackTimeAndSnatches) {  // surge-3
   const double expected_slack_s = 1000.0 * (0.5 - std::asin(0.125) / kPi);
   constexpr double kSlackTimeAbsTol_s = 50 * 2 * 0.05;  // one substep of error at each of 100 crossings
   EXPECT_ABS_CLOSE(s.slack_time_s, expected_slack_s, kSlackTimeAbsTol_s);
+}
+
+TEST(SurgeIntegrator, LockStepDaysEqualSingleDaysBitForBit) {  // surge-4
+  // The cubic-stiffening line: the substep count grows with the extension, so
+  // days with different forcing amplitudes need substeps on different
+  // intervals (the lock-step path falls back to day-by-day there).
+  struct CubicLine {
+    double tension(double xi, double xi_dot) const {
+      return std::max(-2.0e5, 3.0e5 * xi + 1.0e5 * xi * xi * xi + 1.0e4 * xi_dot);
+    }
+    double stiffness(double xi, double) const { return 3.0e5 + 3.0e6 * xi * xi; }
+    double damping(double, double) const { return 1.0e4; }
+    double mean_tension_n() const { return 2.0e5; }
+  };
+  const SurgeParameters p = tug_and_tow();
+  const double dt = 0.5;
+  const std::size_t n = 2000;
+  std::array<DayForcing, 4> f;
+  for (std::size_t l = 0; l < f.size(); ++l) {
+    const double scale = 0.2 + 0.6 * static_cast<double>(l);  // the largest days need substeps
+    f[l] = harmonic_tug_force(3.0e4 * scale, 2.0 * kPi / 30.0, dt, n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t = static_cast<double>(i) * dt;
+      f[l].xi_ns_m[i] = scale * std::sin(2.0 * kPi / (9.0 + l) * t);
+      f[l].xi_ns_dot_m_s[i] = scale * 2.0 * kPi / (9.0 + l) * std::cos(2.0 * kPi / (9.0 + l) * t);
+    }
+  }
+  IntegratorOptions o;
+  o.warmup_s = 600.0;
+  std::array<std::vector<double>, 4> lockstep_trace, single_trace;
+  const auto together = integrate_days<CubicLine, 4>(
+      p, {&f[0], &f[1], &f[2], &f[3]}, CubicLine{}, o,
+      {&lockstep_trace[0], &lockstep_trace[1], &lockstep_trace[2], &lockstep_trace[3]});
+  long substeps_min = std::numeric_limits<long>::max(), substeps_max = 0;
+  for (std::size_t l = 0; l < f.size(); ++l) {
+    const DayStatistics alone = integrate_day(p, f[l], CubicLine{}, o, &single_trace[l]);
+    EXPECT_EQ(together[l].max_tension_n, alone.max_tension_n) << "day " << l;
+    EXPECT_EQ(together[l].min_tension_n, alone.min_tension_n) << "day " << l;
+    EXPECT_EQ(together[l].slack_time_s, alone.slack_time_s) << "day " << l;
+    EXPECT_EQ(together[l].snatch_events, alone.snatch_events) << "day " << l;
+    EXPECT_EQ(together[l].substeps, alone.substeps) << "day " << l;
+    EXPECT_EQ(together[l].tension_sum_n, alone.tension_sum_n) << "day " << l;
+    EXPECT_EQ(together[l].tension_sum_sq_n2, alone.tension_sum_sq_n2) << "day " << l;
+    EXPECT_EQ(lockstep_trace[l], single_trace[l]) << "day " << l;
+    substeps_min = std::min(substeps_min, alone.substeps);
+    substeps_max = std::max(substeps_max, alone.substeps);
+  }
+  // The premise: the days really took different paths (one step per interval
+  // for the smallest, substeps for the largest, with and without slack).
+  EXPECT_EQ(substeps_min, static_cast<long>(n + 1200));  // + 600 s of warm-up
+  EXPECT_GT(substeps_max, substeps_min);
+  EXPECT_EQ(together[0].slack_time_s, 0.0);
+  EXPECT_GT(together[3].slack_time_s, 0.0);
 }
 
 }  // namespace
