@@ -185,8 +185,9 @@ TEST(SurgeIntegrator, LockStepDaysEqualSingleDaysBitForBit) {  // surge-4
     f[l] = harmonic_tug_force(3.0e4 * scale, 2.0 * kPi / 30.0, dt, n);
     for (std::size_t i = 0; i < n; ++i) {
       const double t = static_cast<double>(i) * dt;
-      f[l].xi_ns_m[i] = scale * std::sin(2.0 * kPi / (9.0 + l) * t);
-      f[l].xi_ns_dot_m_s[i] = scale * 2.0 * kPi / (9.0 + l) * std::cos(2.0 * kPi / (9.0 + l) * t);
+      const double w = 2.0 * kPi / (9.0 + static_cast<double>(l));  // each day its own period
+      f[l].xi_ns_m[i] = scale * std::sin(w * t);
+      f[l].xi_ns_dot_m_s[i] = scale * w * std::cos(w * t);
     }
   }
   IntegratorOptions o;
