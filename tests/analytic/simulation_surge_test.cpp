@@ -101,16 +101,19 @@ TEST(SurgeIntegrator, ResonanceNearTheRelativeModeIsResolved) {  // surge-1 at r
   EXPECT_GT(expected, 3.0 * 1.0e5);  // it really is resonant: dynamic amplification
 }
 
+// A cubic-stiffening line (snap-like), slack below -2e5 N.
+struct CubicLine {
+  double cubic_n_m3 = 1.0e5;
+  double tension(double xi, double xi_dot) const {
+    return std::max(-2.0e5, 3.0e5 * xi + cubic_n_m3 * xi * xi * xi + 1.0e4 * xi_dot);
+  }
+  double stiffness(double xi, double) const { return 3.0e5 + 3.0 * cubic_n_m3 * xi * xi; }
+  double damping(double, double) const { return 1.0e4; }
+  double mean_tension_n() const { return 2.0e5; }
+};
+
 TEST(SurgeIntegrator, ConvergesWithForcingInterval) {  // surge-2
-  // A cubic-stiffening line (snap-like) driven by two harmonics.
-  struct CubicLine {
-    double tension(double xi, double xi_dot) const {
-      return std::max(-2.0e5, 3.0e5 * xi + 1.0e5 * xi * xi * xi + 1.0e4 * xi_dot);
-    }
-    double stiffness(double xi, double) const { return 3.0e5 + 3.0e5 * xi * xi; }
-    double damping(double, double) const { return 1.0e4; }
-    double mean_tension_n() const { return 2.0e5; }
-  };
+  // The cubic line driven by two harmonics.
   const SurgeParameters p = tug_and_tow();
   auto run = [&](double dt, std::vector<double>* trace) {
     const std::size_t n = static_cast<std::size_t>(std::llround(1200.0 / dt));
@@ -165,17 +168,10 @@ TEST(SurgeIntegrator, SlackLineCountsSlackTimeAndSnatches) {  // surge-3
 }
 
 TEST(SurgeIntegrator, LockStepDaysEqualSingleDaysBitForBit) {  // surge-4
-  // The cubic-stiffening line: the substep count grows with the extension, so
+  // A stiffer cubic line: the substep count grows with the extension, so
   // days with different forcing amplitudes need substeps on different
   // intervals (the lock-step path falls back to day-by-day there).
-  struct CubicLine {
-    double tension(double xi, double xi_dot) const {
-      return std::max(-2.0e5, 3.0e5 * xi + 1.0e5 * xi * xi * xi + 1.0e4 * xi_dot);
-    }
-    double stiffness(double xi, double) const { return 3.0e5 + 3.0e6 * xi * xi; }
-    double damping(double, double) const { return 1.0e4; }
-    double mean_tension_n() const { return 2.0e5; }
-  };
+  const CubicLine line{1.0e6};
   const SurgeParameters p = tug_and_tow();
   const double dt = 0.5;
   const std::size_t n = 2000;
@@ -194,11 +190,11 @@ TEST(SurgeIntegrator, LockStepDaysEqualSingleDaysBitForBit) {  // surge-4
   o.warmup_s = 600.0;
   std::array<std::vector<double>, 4> lockstep_trace, single_trace;
   const auto together = integrate_days<CubicLine, 4>(
-      p, {&f[0], &f[1], &f[2], &f[3]}, CubicLine{}, o,
+      p, {&f[0], &f[1], &f[2], &f[3]}, line, o,
       {&lockstep_trace[0], &lockstep_trace[1], &lockstep_trace[2], &lockstep_trace[3]});
   long substeps_min = std::numeric_limits<long>::max(), substeps_max = 0;
   for (std::size_t l = 0; l < f.size(); ++l) {
-    const DayStatistics alone = integrate_day(p, f[l], CubicLine{}, o, &single_trace[l]);
+    const DayStatistics alone = integrate_day(p, f[l], line, o, &single_trace[l]);
     EXPECT_EQ(together[l].max_tension_n, alone.max_tension_n) << "day " << l;
     EXPECT_EQ(together[l].min_tension_n, alone.min_tension_n) << "day " << l;
     EXPECT_EQ(together[l].slack_time_s, alone.slack_time_s) << "day " << l;
