@@ -83,6 +83,16 @@ TEST(SimulationCase, BitIdenticalForAnyThreadCount) {  // case-2
   }
   EXPECT_EQ(std::bit_cast<std::uint64_t>(a.statistics.dynamic_999_n),
             std::bit_cast<std::uint64_t>(b.statistics.dynamic_999_n));
+  // run_case integrates days 0-3 in lock step and days 4-5 one at a time; each
+  // equals the day simulated alone (surge.hpp integrate_days).
+  const auto model = prepare_case(in, one);
+  for (std::uint64_t d : {0u, 3u, 5u}) {
+    const DayStatistics alone = simulate_day(*model, day_forcing(*model, in.seed, d), one.integrator);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(a.days[d].max_dynamic_tension_n),
+              std::bit_cast<std::uint64_t>(alone.max_tension_n))
+        << "day " << d;
+    EXPECT_EQ(a.days[d].slack_time_s, alone.slack_time_s) << "day " << d;
+  }
   CaseInputs other = in;
   other.seed = 8;
   const CaseResult c = run_case(other, one);
