@@ -19,7 +19,9 @@
 // T_day = N dt. Integration starts at rest at t = -warmup (the record is
 // periodic, so the forcing before t = 0 is the day's own end) and statistics
 // are taken over [0, T_day) only: the start-up transient is excluded from every
-// day, which makes days independent and lets them run in parallel.
+// day, which makes days independent and lets them run in parallel, and lets
+// integrate_days advance several days in lock step on one core (throughput
+// only: each day's arithmetic is that of integrate_day).
 //
 // Integrator: classical RK4. The step is the forcing interval dt, split into
 // m substeps where the local line stiffness makes the relative surge mode fast
