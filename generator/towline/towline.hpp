@@ -113,6 +113,14 @@
 //     stiffness well below EA/L) the RMS fit error over the excitation set is
 //     10-45% of the RMS tension, for nearly straight wire and for fiber below
 //     10%. The fitted a10 can even be negative for very slack wire.
+//   * Very slack lines: the resolution search compares the probe runs'
+//     periodic states point by point. When a large-amplitude run snaps and
+//     never settles to a periodic state, the comparison need not settle either,
+//     and whether it does depends on the input's last digits. T-ATF 166 / YRBM
+//     on 800 ft of fiber: 256 elements at 4,635.9 lbf, 512 at 4,635.94285 lbf,
+//     no convergence up to 1,024 in the sweep at the same tension to 15
+//     digits, nor at 4,700 lbf. Such fits fail with NumericalError; a
+//     criterion on the fitted polynomial instead of the runs would be the fix.
 #ifndef TOWDB_TOWLINE_TOWLINE_HPP
 #define TOWDB_TOWLINE_TOWLINE_HPP
 
