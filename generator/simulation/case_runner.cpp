@@ -86,7 +86,9 @@ struct PolynomialLaw {
     if (v != vc) tau += std::max(0.0, dp_dv(xc, vc)) * (v - vc);
     return tau;
   }
-  TOWDB_SURGE_INLINE bool spring(double x) const { return model == towline::AboveBreakingModel::kStraightSpring && x > x_b; }
+  TOWDB_SURGE_INLINE bool spring(double x) const {
+    return model == towline::AboveBreakingModel::kStraightSpring && x > x_b;
+  }
   TOWDB_SURGE_INLINE double unlimited(double x, double v) const {
     return spring(x) ? extended(x_b, v) + k_spring * (x - x_b) : extended(x, v);
   }

@@ -182,8 +182,8 @@ namespace detail {
 // (a day's result does not depend on the days it was integrated with).
 template <typename TensionLaw>
 struct SurgeKernel {
-  // Copies, not references: the statistics written through references in
-  // the loop could otherwise alias them and force reloads.
+  // Held by value (a few doubles and a pointer): the statistics written in
+  // the loop through references cannot alias them.
   const SurgeParameters p;
   const TensionLaw law;
   double mean;            // T: slack when tau <= -T
@@ -210,7 +210,8 @@ struct SurgeKernel {
 
   // Substeps for the interval starting at state y with forcing g0: the local
   // stiffness and damping of the line bound omega_loc h and beta_loc h.
-  TOWDB_SURGE_INLINE int substeps(const State& y, const Forcing& g0, double dt, const IntegratorOptions& options) const {
+  TOWDB_SURGE_INLINE int substeps(const State& y, const Forcing& g0, double dt,
+                                  const IntegratorOptions& options) const {
     const double xi = y.x1 * p.cos_alpha_tug - y.x7 * p.cos_alpha_tow + g0.xi_ns;
     const double xi_dot = y.v1 * p.cos_alpha_tug - y.v7 * p.cos_alpha_tow + g0.xi_ns_dot;
     const double k_loc = std::max(0.0, law.stiffness(xi, xi_dot));
@@ -224,7 +225,7 @@ struct SurgeKernel {
   // between forcing samples count; each point stands for h. tau at the
   // interval's first substep is tau at forcing sample `sample_index`.
   TOWDB_SURGE_INLINE void record(DayStatistics& stats, bool& was_slack, double tau, double h, bool first_substep,
-              std::size_t sample_index, std::vector<double>* trace) const {
+                                 std::size_t sample_index, std::vector<double>* trace) const {
     const bool slack = tau <= -mean;
     stats.max_tension_n = std::max(stats.max_tension_n, tau);
     stats.min_tension_n = std::min(stats.min_tension_n, tau);
@@ -239,7 +240,8 @@ struct SurgeKernel {
     }
   }
 
-  TOWDB_SURGE_INLINE static void advance(State& y, double h, const State& k1, const State& k2, const State& k3, const State& k4) {
+  TOWDB_SURGE_INLINE static void advance(State& y, double h, const State& k1, const State& k2, const State& k3,
+                                         const State& k4) {
     y.x1 += h / 6.0 * (k1.x1 + 2.0 * k2.x1 + 2.0 * k3.x1 + k4.x1);
     y.v1 += h / 6.0 * (k1.v1 + 2.0 * k2.v1 + 2.0 * k3.v1 + k4.v1);
     y.x7 += h / 6.0 * (k1.x7 + 2.0 * k2.x7 + 2.0 * k3.x7 + k4.x7);
@@ -330,8 +332,12 @@ std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const std:
           kernel.record(stats[l], was_slack[l], tau[l], dt, true, sample_index, trace[l]);
         }
       }
-      for (std::size_t l = 0; l < K; ++l) k2[l] = kernel.derivative(detail::axpy(y[l], 0.5 * dt, k1[l]), gm[l], &unused);
-      for (std::size_t l = 0; l < K; ++l) k3[l] = kernel.derivative(detail::axpy(y[l], 0.5 * dt, k2[l]), gm[l], &unused);
+      for (std::size_t l = 0; l < K; ++l) {
+        k2[l] = kernel.derivative(detail::axpy(y[l], 0.5 * dt, k1[l]), gm[l], &unused);
+      }
+      for (std::size_t l = 0; l < K; ++l) {
+        k3[l] = kernel.derivative(detail::axpy(y[l], 0.5 * dt, k2[l]), gm[l], &unused);
+      }
       for (std::size_t l = 0; l < K; ++l) k4[l] = kernel.derivative(detail::axpy(y[l], dt, k3[l]), gb[l], &unused);
       for (std::size_t l = 0; l < K; ++l) {
         detail::SurgeKernel<TensionLaw>::advance(y[l], dt, k1[l], k2[l], k3[l], k4[l]);
