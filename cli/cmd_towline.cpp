@@ -144,7 +144,8 @@ int run_towline(const Context& ctx, const TowlineArgs& a) {
                        {"max_dt_s", s.max_dt_s},
                        {"space_resolution_change", s.space_resolution_change},
                        {"time_resolution_change", s.time_resolution_change},
-                       {"criterion", options.resolution_tolerance}};
+                       {"criterion", options.resolution_tolerance},
+                       {"probes_left_out", s.resolution_probes_left_out}};
     j["runs"] = s.runs;
     j["runs_not_periodic"] = s.runs_not_periodic;
     j["runtime_s"] = runtime_s;
@@ -194,7 +195,12 @@ int run_towline(const Context& ctx, const TowlineArgs& a) {
             << " %), " << s.steps_per_period << " steps per period (change dt -> dt/2 "
             << fmt(100.0 * s.time_resolution_change, 2) << " %); criterion "
             << fmt(100.0 * options.resolution_tolerance, 1) << " %; " << s.runs << " runs, " << s.runs_not_periodic
-            << " not periodic; " << fmt(runtime_s, 2) << " s\n";
+            << " not periodic";
+  if (s.resolution_probes_left_out > 0) {
+    std::cout << "; " << s.resolution_probes_left_out
+              << " probe runs that never became periodic left out of the resolution criterion";
+  }
+  std::cout << "; " << fmt(runtime_s, 2) << " s\n";
   return 0;
 }
 

@@ -98,15 +98,21 @@ std::vector<HarmonicRun> run_set(const ShallowSagModel& model, const std::vector
   return out;
 }
 
-// Largest relative RMS change between two resolutions over the probes. Runs
-// that stopped after different cycle counts are compared after re-running the
+// Relative RMS change between two resolutions over the probes. Runs that
+// stopped after different cycle counts are compared after re-running the
 // shorter one for as many cycles, so a slowly decaying start-up transient is
 // not mistaken for discretisation error.
-double probe_change(const ShallowSagModel& model_a, std::vector<HarmonicRun>& runs_a,
-                    const DynamicsOptions& options_a, const ShallowSagModel& model_b,
-                    std::vector<HarmonicRun>& runs_b, const DynamicsOptions& options_b,
-                    const std::vector<Excitation>& set, const std::vector<std::size_t>& probes,
-                    int num_threads) {
+struct ProbeChange {
+  double all = 0.0;       // largest over every probe
+  double periodic = 0.0;  // largest over the probes periodic at both resolutions
+  int not_periodic = 0;   // probes left out of `periodic`
+};
+
+ProbeChange probe_change(const ShallowSagModel& model_a, std::vector<HarmonicRun>& runs_a,
+                         const DynamicsOptions& options_a, const ShallowSagModel& model_b,
+                         std::vector<HarmonicRun>& runs_b, const DynamicsOptions& options_b,
+                         const std::vector<Excitation>& set, const std::vector<std::size_t>& probes,
+                         int num_threads) {
   std::vector<double> change(probes.size(), 0.0);
   parallel_for(0, static_cast<std::int64_t>(probes.size()), num_threads, [&](std::int64_t i) {
     const auto k = static_cast<std::size_t>(i);
@@ -124,8 +130,34 @@ double probe_change(const ShallowSagModel& model_a, std::vector<HarmonicRun>& ru
     }
     change[k] = relative_rms_change(runs_a[k], runs_b[k]);
   });
-  return *std::max_element(change.begin(), change.end());
+  ProbeChange c;
+  for (std::size_t k = 0; k < probes.size(); ++k) {
+    c.all = std::max(c.all, change[k]);
+    if (runs_a[k].periodic && runs_b[k].periodic) {
+      c.periodic = std::max(c.periodic, change[k]);
+    } else {
+      ++c.not_periodic;
+    }
+  }
+  return c;
 }
+
+// The resolution search's second criterion (EQ-TOWLINE-15): the first
+// comparison at which the probes that reached a periodic state at both
+// resolutions agree, provided some did and some did not.
+struct PeriodicFallback {
+  bool found = false;
+  double change = 0.0;
+  int left_out = 0;
+  void consider(const ProbeChange& c, std::size_t probes, double tolerance) {
+    if (!found && c.not_periodic > 0 && static_cast<std::size_t>(c.not_periodic) < probes &&
+        c.periodic <= tolerance) {
+      found = true;
+      change = c.periodic;
+      left_out = c.not_periodic;
+    }
+  }
+};
 
 }  // namespace
 
@@ -148,17 +180,33 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
   auto model = std::make_unique<ShallowSagModel>(cat, n);
   std::vector<HarmonicRun> probe_runs = run_set(*model, set, probes, dyn, options.num_threads);
   double space_change = 0.0;
+  int left_out = 0;
+  PeriodicFallback space_fallback;
+  int space_fallback_n = 0;
   for (int iteration = 1;; ++iteration) {
     if (2 * n > options.max_elements) {
-      throw NumericalError("shallow-sag spatial resolution search: no convergence up to " +
-                           std::to_string(n) + " elements (iteration " + std::to_string(iteration) +
-                           ", residual RMS change " + format_value(space_change) + ")");
+      if (!space_fallback.found) {
+        throw NumericalError("shallow-sag spatial resolution search: no convergence up to " +
+                             std::to_string(n) + " elements (iteration " + std::to_string(iteration) +
+                             ", residual RMS change " + format_value(space_change) + ")");
+      }
+      n = space_fallback_n;
+      model = std::make_unique<ShallowSagModel>(cat, n);
+      probe_runs = run_set(*model, set, probes, dyn, options.num_threads);
+      space_change = space_fallback.change;
+      left_out = space_fallback.left_out;
+      break;
     }
     auto finer = std::make_unique<ShallowSagModel>(cat, 2 * n);
     std::vector<HarmonicRun> finer_runs = run_set(*finer, set, probes, dyn, options.num_threads);
-    space_change = probe_change(*model, probe_runs, dyn, *finer, finer_runs, dyn, set, probes,
-                                options.num_threads);
+    const ProbeChange c = probe_change(*model, probe_runs, dyn, *finer, finer_runs, dyn, set, probes,
+                                       options.num_threads);
+    space_change = c.all;
     if (space_change <= options.resolution_tolerance) break;
+    if (!space_fallback.found) {
+      space_fallback.consider(c, probes.size(), options.resolution_tolerance);
+      if (space_fallback.found) space_fallback_n = n;
+    }
     n *= 2;
     model = std::move(finer);
     probe_runs = std::move(finer_runs);
@@ -169,20 +217,34 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
   // stability and needs no search.
   double time_change = 0.0;
   if (dyn.integrator == Integrator::kImplicitTrapezoidal) {
+    PeriodicFallback time_fallback;
+    DynamicsOptions time_fallback_dyn;
     for (int iteration = 1;; ++iteration) {
       DynamicsOptions half = dyn;
       half.steps_per_period *= 2;
       half.steps_per_line_period *= 2;
       if (half.steps_per_period > options.max_steps_per_period) {
-        throw NumericalError("shallow-sag time resolution search: no convergence up to " +
-                             std::to_string(dyn.steps_per_period) + " steps per period (iteration " +
-                             std::to_string(iteration) + ", residual RMS change " +
-                             format_value(time_change) + ")");
+        if (!time_fallback.found) {
+          throw NumericalError("shallow-sag time resolution search: no convergence up to " +
+                               std::to_string(dyn.steps_per_period) + " steps per period (iteration " +
+                               std::to_string(iteration) + ", residual RMS change " +
+                               format_value(time_change) + ")");
+        }
+        dyn = time_fallback_dyn;
+        probe_runs = run_set(*model, set, probes, dyn, options.num_threads);
+        time_change = time_fallback.change;
+        left_out = std::max(left_out, time_fallback.left_out);
+        break;
       }
       std::vector<HarmonicRun> half_runs = run_set(*model, set, probes, half, options.num_threads);
-      time_change = probe_change(*model, probe_runs, dyn, *model, half_runs, half, set, probes,
-                                 options.num_threads);
+      const ProbeChange c = probe_change(*model, probe_runs, dyn, *model, half_runs, half, set, probes,
+                                         options.num_threads);
+      time_change = c.all;
       if (time_change <= options.resolution_tolerance) break;
+      if (!time_fallback.found) {
+        time_fallback.consider(c, probes.size(), options.resolution_tolerance);
+        if (time_fallback.found) time_fallback_dyn = dyn;
+      }
       dyn = half;
       probe_runs = std::move(half_runs);
     }
@@ -246,6 +308,7 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
   s.steps_per_line_period = dyn.integrator == Integrator::kImplicitTrapezoidal ? dyn.steps_per_line_period : 0;
   s.space_resolution_change = space_change;
   s.time_resolution_change = time_change;
+  s.resolution_probes_left_out = left_out;
   s.runs = static_cast<int>(runs.size());
   return std::make_shared<const TowlineFit>(std::move(cat), s, std::move(runs));
 }

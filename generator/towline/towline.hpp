@@ -88,6 +88,16 @@
 //                 strength (catenary solved at H = breaking strength).
 //                 tau is continuous in xi and xi_dot.
 //   EQ-TOWLINE-14 excitation set p0 = a sin(omega t): see ExcitationOptions.
+//   EQ-TOWLINE-15 resolution criterion: N elements (time step dt) are used
+//                 once max_p |tau_p(N) - tau_p(2N)|_rms / |tau_p(2N)|_rms
+//                 <= resolution_tolerance over the probe runs p, compared at
+//                 the same phases of their last cycle. A run that never
+//                 becomes periodic (a slack line snapping irregularly) has no
+//                 phase-locked state to compare: when the search would fail
+//                 with every probe counted, the first resolution at which the
+//                 probes periodic at both resolutions agree is used, if at
+//                 least one probe was left out and one remained
+//                 (FitSummary::resolution_probes_left_out).
 //   The simulation's slack limit is applied by dynamic_tension_n:
 //   tau >= -min T (EQ-TOWLINE-8; -H when the line has a horizontal tangent).
 //   Beyond the thesis (default, selectable): samples taken while the run was
@@ -113,14 +123,14 @@
 //     stiffness well below EA/L) the RMS fit error over the excitation set is
 //     10-45% of the RMS tension, for nearly straight wire and for fiber below
 //     10%. The fitted a10 can even be negative for very slack wire.
-//   * Very slack lines: the resolution search compares the probe runs'
-//     periodic states point by point. When a large-amplitude run snaps and
-//     never settles to a periodic state, the comparison need not settle either,
-//     and whether it does depends on the input's last digits. T-ATF 166 / YRBM
-//     on 800 ft of fiber: 256 elements at 4,635.9 lbf, 512 at 4,635.94285 lbf,
-//     no convergence up to 1,024 in the sweep at the same tension to 15
-//     digits, nor at 4,700 lbf. Such fits fail with NumericalError; a
-//     criterion on the fitted polynomial instead of the runs would be the fix.
+//   * Very slack lines: probe runs that snap and never become periodic make
+//     the point-by-point comparison depend on the input's last digits (T-ATF
+//     166 / YRBM on 800 ft of fiber: 256 elements at 4,635.9 lbf, 512 at
+//     4,635.94285 lbf, no convergence up to 1,024 at 4,700 lbf with every
+//     probe counted). The second criterion of EQ-TOWLINE-15 then decides on
+//     the periodic probes alone (128 elements at 4,700 lbf), which trusts
+//     that the irregular runs are resolved as well as the regular ones.
+//     Fits that the first criterion settles are unchanged by it.
 #ifndef TOWDB_TOWLINE_TOWLINE_HPP
 #define TOWDB_TOWLINE_TOWLINE_HPP
 
@@ -208,6 +218,9 @@ struct FitSummary {
   double max_dt_s = 0.0;
   double space_resolution_change = 0.0;  // probe RMS change N -> 2N / RMS tau
   double time_resolution_change = 0.0;   // probe RMS change dt -> dt/2 / RMS tau
+  // Probe runs that never became periodic and were left out of the accepted
+  // resolution's criterion (EQ-TOWLINE-15); 0 when every probe agreed.
+  int resolution_probes_left_out = 0;
   int runs = 0;
   int runs_not_periodic = 0;          // stopped at max_cycles
 };
