@@ -418,25 +418,28 @@ DayForcing day_forcing(const CaseModel& m, std::uint64_t seed, std::uint64_t day
   return std::move(s.forcing);
 }
 
+namespace {
+
+// Calls fn with the case's tension law (the integrator is a template on it).
+template <typename Fn>
+auto with_tension_law(const CaseModel& m, Fn&& fn) {
+  if (m.options.tension_law == TensionLaw::kLinear) {
+    return fn(LinearLaw{m.fit->coefficients().a10(), m.fit->coefficients().a01()});
+  }
+  return fn(PolynomialLaw(m.fit.get(), m.options.above_breaking));
+}
+
+}  // namespace
+
 DayStatistics simulate_day(const CaseModel& m, const DayForcing& forcing, const IntegratorOptions& options,
                            std::vector<double>* trace) {
-  if (m.options.tension_law == TensionLaw::kLinear) {
-    const LinearLaw law{m.fit->coefficients().a10(), m.fit->coefficients().a01()};
-    return integrate_day(m.surge, forcing, law, options, trace);
-  }
-  const PolynomialLaw law(m.fit.get(), m.options.above_breaking);
-  return integrate_day(m.surge, forcing, law, options, trace);
+  return with_tension_law(m, [&](const auto& law) { return integrate_day(m.surge, forcing, law, options, trace); });
 }
 
 std::array<DayStatistics, kLockstepDays> simulate_days(const CaseModel& m,
                                                       const std::array<const DayForcing*, kLockstepDays>& forcing,
                                                       const IntegratorOptions& options) {
-  if (m.options.tension_law == TensionLaw::kLinear) {
-    const LinearLaw law{m.fit->coefficients().a10(), m.fit->coefficients().a01()};
-    return integrate_days(m.surge, forcing, law, options);
-  }
-  const PolynomialLaw law(m.fit.get(), m.options.above_breaking);
-  return integrate_days(m.surge, forcing, law, options);
+  return with_tension_law(m, [&](const auto& law) { return integrate_days(m.surge, forcing, law, options); });
 }
 
 double linear_tension_variance_n2(const CaseInputs& inputs, const CaseOptions& options) {

@@ -144,15 +144,19 @@ ProbeChange probe_change(const ShallowSagModel& model_a, std::vector<HarmonicRun
 
 // The resolution search's second criterion (EQ-TOWLINE-15): the first
 // comparison at which the probes that reached a periodic state at both
-// resolutions agree, provided some did and some did not.
+// resolutions agree, provided some did and some did not. `Resolution` is the
+// coarser side of that comparison (elements, or the dynamics options).
+template <typename Resolution>
 struct PeriodicFallback {
   bool found = false;
+  Resolution resolution{};
   double change = 0.0;
   int left_out = 0;
-  void consider(const ProbeChange& c, std::size_t probes, double tolerance) {
+  void consider(const ProbeChange& c, const Resolution& coarser, std::size_t probes, double tolerance) {
     if (!found && c.not_periodic > 0 && static_cast<std::size_t>(c.not_periodic) < probes &&
         c.periodic <= tolerance) {
       found = true;
+      resolution = coarser;
       change = c.periodic;
       left_out = c.not_periodic;
     }
@@ -181,8 +185,7 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
   std::vector<HarmonicRun> probe_runs = run_set(*model, set, probes, dyn, options.num_threads);
   double space_change = 0.0;
   int left_out = 0;
-  PeriodicFallback space_fallback;
-  int space_fallback_n = 0;
+  PeriodicFallback<int> space_fallback;
   for (int iteration = 1;; ++iteration) {
     if (2 * n > options.max_elements) {
       if (!space_fallback.found) {
@@ -190,7 +193,7 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
                              std::to_string(n) + " elements (iteration " + std::to_string(iteration) +
                              ", residual RMS change " + format_value(space_change) + ")");
       }
-      n = space_fallback_n;
+      n = space_fallback.resolution;
       model = std::make_unique<ShallowSagModel>(cat, n);
       probe_runs = run_set(*model, set, probes, dyn, options.num_threads);
       space_change = space_fallback.change;
@@ -203,10 +206,7 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
                                        options.num_threads);
     space_change = c.all;
     if (space_change <= options.resolution_tolerance) break;
-    if (!space_fallback.found) {
-      space_fallback.consider(c, probes.size(), options.resolution_tolerance);
-      if (space_fallback.found) space_fallback_n = n;
-    }
+    space_fallback.consider(c, n, probes.size(), options.resolution_tolerance);
     n *= 2;
     model = std::move(finer);
     probe_runs = std::move(finer_runs);
@@ -217,8 +217,7 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
   // stability and needs no search.
   double time_change = 0.0;
   if (dyn.integrator == Integrator::kImplicitTrapezoidal) {
-    PeriodicFallback time_fallback;
-    DynamicsOptions time_fallback_dyn;
+    PeriodicFallback<DynamicsOptions> time_fallback;
     for (int iteration = 1;; ++iteration) {
       DynamicsOptions half = dyn;
       half.steps_per_period *= 2;
@@ -230,7 +229,7 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
                                std::to_string(iteration) + ", residual RMS change " +
                                format_value(time_change) + ")");
         }
-        dyn = time_fallback_dyn;
+        dyn = time_fallback.resolution;
         probe_runs = run_set(*model, set, probes, dyn, options.num_threads);
         time_change = time_fallback.change;
         left_out = std::max(left_out, time_fallback.left_out);
@@ -241,10 +240,7 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
                                          options.num_threads);
       time_change = c.all;
       if (time_change <= options.resolution_tolerance) break;
-      if (!time_fallback.found) {
-        time_fallback.consider(c, probes.size(), options.resolution_tolerance);
-        if (time_fallback.found) time_fallback_dyn = dyn;
-      }
+      time_fallback.consider(c, dyn, probes.size(), options.resolution_tolerance);
       dyn = half;
       probe_runs = std::move(half_runs);
     }
