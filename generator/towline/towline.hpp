@@ -118,11 +118,16 @@
 //   * Shallow sag: the quasi-static dynamic stiffness falls below the exact
 //     catenary's dH/dX by about the line's mean square slope (2% at
 //     sag/span ~ 0.07; 27% for a 2000 ft wire at 2,500 lbf).
-//   * A tau(xi, xi_dot) polynomial cannot represent a tension that depends on
-//     the extension's frequency; for catenary-dominated wire lines (static
-//     stiffness well below EA/L) the RMS fit error over the excitation set is
-//     10-45% of the RMS tension, for nearly straight wire and for fiber below
-//     10%. The fitted a10 can even be negative for very slack wire.
+//   * For catenary-dominated wire lines (static stiffness well below EA/L)
+//     the RMS fit error over the excitation set is 12-42% of the RMS tension;
+//     for nearly straight wire and for fiber it is below 10%. Two causes: the
+//     elastic catenary's force-extension curve over +-6 m is not a cubic (the
+//     best cubic through the quasi-static runs alone misses by 11-19% for
+//     1000 ft at 15,000-51,500 lbf, 34-40% for 2000 ft below 21,000 lbf), and
+//     the tension depends on the extension's frequency, which no
+//     tau(xi, xi_dot) polynomial represents (tests/validation/
+//     towline_calibration_test.cpp prints both). The fitted a10 can even be
+//     negative for very slack wire.
 //   * Very slack lines: probe runs that snap and never become periodic make
 //     the point-by-point comparison depend on the input's last digits (T-ATF
 //     166 / YRBM on 800 ft of fiber: 256 elements at 4,635.9 lbf, 512 at
