@@ -69,41 +69,57 @@ struct PolynomialLaw {
 
   // Evaluated four times per RK4 step: inlined into the loop (TOWDB_SURGE_INLINE,
   // simulation/surge.hpp); GCC 12 otherwise calls extended() out of line.
-  TOWDB_SURGE_INLINE double p(double x, double v) const { return fit->coefficients().evaluate_n(x, v); }
-  TOWDB_SURGE_INLINE double dp_dx(double x, double v) const {
+  // Templates on the number type (double or the integrator's lanes); the
+  // branches of EQ-CASE-1 are lane selects, the same values as if / else.
+  template <typename T>
+  TOWDB_SURGE_INLINE T p(T x, T v) const {
+    return fit->coefficients().evaluate(x, v);
+  }
+  template <typename T>
+  TOWDB_SURGE_INLINE T dp_dx(T x, T v) const {
     const auto& a = fit->coefficients().a;
     return a[0] + 2.0 * a[2] * x + a[3] * v + 3.0 * a[5] * x * x + 2.0 * a[6] * x * v + a[7] * v * v;
   }
-  TOWDB_SURGE_INLINE double dp_dv(double x, double v) const {
+  template <typename T>
+  TOWDB_SURGE_INLINE T dp_dv(T x, T v) const {
     const auto& a = fit->coefficients().a;
     return a[1] + a[3] * x + 2.0 * a[4] * v + a[6] * x * x + 2.0 * a[7] * x * v + 3.0 * a[8] * v * v;
   }
   // EQ-CASE-1 without the spring and slack limits.
-  TOWDB_SURGE_INLINE double extended(double x, double v) const {
-    const double xc = std::clamp(x, x_lo, x_hi), vc = std::clamp(v, -v_max, v_max);
-    double tau = p(xc, vc);
-    if (x != xc) tau += std::max(0.0, dp_dx(xc, vc)) * (x - xc);
-    if (v != vc) tau += std::max(0.0, dp_dv(xc, vc)) * (v - vc);
+  template <typename T>
+  TOWDB_SURGE_INLINE T extended(T x, T v) const {
+    const T xc = lanes::clamp(x, x_lo, x_hi), vc = lanes::clamp(v, -v_max, v_max);
+    const T zero = lanes::splat<T>(0.0);
+    T tau = p(xc, vc);
+    const auto x_out = x != xc, v_out = v != vc;  // outside the fitted range (rare)
+    if (lanes::any(x_out)) tau = lanes::select(x_out, tau + lanes::max(zero, dp_dx(xc, vc)) * (x - xc), tau);
+    if (lanes::any(v_out)) tau = lanes::select(v_out, tau + lanes::max(zero, dp_dv(xc, vc)) * (v - vc), tau);
     return tau;
   }
-  TOWDB_SURGE_INLINE bool spring(double x) const {
-    return model == towline::AboveBreakingModel::kStraightSpring && x > x_b;
+  bool straight_spring() const { return model == towline::AboveBreakingModel::kStraightSpring; }
+  template <typename T>
+  TOWDB_SURGE_INLINE T unlimited(T x, T v) const {
+    if (!straight_spring()) return extended(x, v);
+    const T b = lanes::splat<T>(x_b);
+    return lanes::select(x > b, extended(b, v) + k_spring * (x - b), extended(x, v));
   }
-  TOWDB_SURGE_INLINE double unlimited(double x, double v) const {
-    return spring(x) ? extended(x_b, v) + k_spring * (x - x_b) : extended(x, v);
+  template <typename T>
+  TOWDB_SURGE_INLINE T tension(T x, T v) const {
+    return lanes::max(unlimited(x, v), lanes::splat<T>(slack));
   }
-  TOWDB_SURGE_INLINE double tension(double x, double v) const { return std::max(unlimited(x, v), slack); }
-  TOWDB_SURGE_INLINE double stiffness(double x, double v) const {
-    if (spring(x)) return k_spring;
-    const double xc = std::clamp(x, x_lo, x_hi), vc = std::clamp(v, -v_max, v_max);
-    const double d = dp_dx(xc, vc);
-    return x != xc ? std::max(0.0, d) : d;
+  template <typename T>
+  TOWDB_SURGE_INLINE T stiffness(T x, T v) const {
+    const T xc = lanes::clamp(x, x_lo, x_hi), vc = lanes::clamp(v, -v_max, v_max);
+    const T d = dp_dx(xc, vc);
+    const T k = lanes::select(x != xc, lanes::max(lanes::splat<T>(0.0), d), d);
+    return straight_spring() ? lanes::select(x > lanes::splat<T>(x_b), lanes::splat<T>(k_spring), k) : k;
   }
-  TOWDB_SURGE_INLINE double damping(double x, double v) const {
-    if (spring(x)) x = x_b;
-    const double xc = std::clamp(x, x_lo, x_hi), vc = std::clamp(v, -v_max, v_max);
-    const double d = dp_dv(xc, vc);
-    return v != vc ? std::max(0.0, d) : d;
+  template <typename T>
+  TOWDB_SURGE_INLINE T damping(T x, T v) const {
+    if (straight_spring()) x = lanes::select(x > lanes::splat<T>(x_b), lanes::splat<T>(x_b), x);
+    const T xc = lanes::clamp(x, x_lo, x_hi), vc = lanes::clamp(v, -v_max, v_max);
+    const T d = dp_dv(xc, vc);
+    return lanes::select(v != vc, lanes::max(lanes::splat<T>(0.0), d), d);
   }
   double mean_tension_n() const { return -slack; }
 };
@@ -111,9 +127,18 @@ struct PolynomialLaw {
 // tau = a10 xi + a01 xi', never slack (the linear-limit check).
 struct LinearLaw {
   double k, c;
-  double tension(double xi, double xd) const { return k * xi + c * xd; }
-  double stiffness(double, double) const { return k; }
-  double damping(double, double) const { return c; }
+  template <typename T>
+  T tension(T xi, T xd) const {
+    return k * xi + c * xd;
+  }
+  template <typename T>
+  T stiffness(T, T) const {
+    return lanes::splat<T>(k);
+  }
+  template <typename T>
+  T damping(T, T) const {
+    return lanes::splat<T>(c);
+  }
   double mean_tension_n() const { return std::numeric_limits<double>::infinity(); }
 };
 
@@ -410,6 +435,35 @@ void fill_forcing(const CaseModel& m, std::uint64_t seed, std::uint64_t day, Day
   f.xi_ns_dot_m_s.assign(xi_dot.begin(), xi_dot.end());
 }
 
+// A lock-step group's scratch: the synthesizer's buffers and the days'
+// records interleaved for integrate_days.
+struct GroupScratch {
+  sea::DaySynthesizer::Workspace workspace;
+  LockstepForcing<kLockstepDays> forcing;
+};
+
+// Synthesises day `day` into lane l of the group: the records of fill_forcing,
+// interleaved (written right after the synthesis, while they are in cache; a
+// single pass over four synthesised days was no faster and needs four
+// workspaces).
+void fill_lane(const CaseModel& m, std::uint64_t seed, std::uint64_t day, std::size_t l, GroupScratch& s) {
+  constexpr std::size_t K = kLockstepDays;
+  m.synthesizer->synthesize(seed, day, s.workspace);
+  LockstepForcing<K>& f = s.forcing;
+  f.dt_s = m.synthesizer->plan().time_step_s();
+  const auto f1_tug = s.workspace.linear(kF1Tug), f1_tow = s.workspace.linear(kF1Tow);
+  const auto f2_tug = s.workspace.drift(kF2Tug), f2_tow = s.workspace.drift(kF2Tow);
+  const auto xi = s.workspace.linear(kXiNs), xi_dot = s.workspace.linear(kXiNsDot);
+  const std::size_t n = f1_tug.size();
+  if (f.size() != n) f.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    f.tug_force_n[i * K + l] = f1_tug[i] + f2_tug[i];
+    f.tow_force_n[i * K + l] = f1_tow[i] + f2_tow[i];
+    f.xi_ns_m[i * K + l] = xi[i];
+    f.xi_ns_dot_m_s[i * K + l] = xi_dot[i];
+  }
+}
+
 }  // namespace
 
 DayForcing day_forcing(const CaseModel& m, std::uint64_t seed, std::uint64_t day) {
@@ -437,7 +491,7 @@ DayStatistics simulate_day(const CaseModel& m, const DayForcing& forcing, const 
 }
 
 std::array<DayStatistics, kLockstepDays> simulate_days(const CaseModel& m,
-                                                      const std::array<const DayForcing*, kLockstepDays>& forcing,
+                                                      const LockstepForcing<kLockstepDays>& forcing,
                                                       const IntegratorOptions& options) {
   return with_tension_law(m, [&](const auto& law) { return integrate_days(m.surge, forcing, law, options); });
 }
@@ -479,29 +533,23 @@ CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options) {
   int done = 0;
   // Days in groups of kLockstepDays consecutive days, each group's surge
   // equations integrated in lock step (integrate_days): the grouping depends
-  // only on the day numbers, and a day's result not even on its group.
-  using Group = std::array<std::unique_ptr<DayScratch>, kLockstepDays>;
-  std::vector<Group> scratch(static_cast<std::size_t>(workers(options.num_threads)));
+  // only on the day numbers, and a day's result not even on its group. A last,
+  // partial group repeats its first day in the unused lanes (results dropped).
+  std::vector<std::unique_ptr<GroupScratch>> scratch(static_cast<std::size_t>(workers(options.num_threads)));
   const int groups = (days + static_cast<int>(kLockstepDays) - 1) / static_cast<int>(kLockstepDays);
   parallel_for_workers(0, groups, options.num_threads, [&](std::int64_t g, int worker) {
     const std::size_t first = static_cast<std::size_t>(g) * kLockstepDays;
     const std::size_t count = std::min(kLockstepDays, static_cast<std::size_t>(days) - first);
-    Group& s = scratch[static_cast<std::size_t>(worker)];
+    auto& s = scratch[static_cast<std::size_t>(worker)];
+    if (!s) s = std::make_unique<GroupScratch>(GroupScratch{m->synthesizer->make_workspace(), {}});
     for (std::size_t l = 0; l < count; ++l) {
-      if (!s[l]) s[l] = std::make_unique<DayScratch>(DayScratch{m->synthesizer->make_workspace(), {}});
       const auto t = Clock::now();
-      fill_forcing(*m, inputs.seed, static_cast<std::uint64_t>(first + l), *s[l]);
+      fill_lane(*m, inputs.seed, static_cast<std::uint64_t>(first + l), l, *s);
       synth_s[first + l] = seconds_since(t);
     }
+    for (std::size_t l = count; l < kLockstepDays; ++l) s->forcing.copy_lane(0, l);
     const auto t = Clock::now();
-    std::array<DayStatistics, kLockstepDays> st;
-    if (count == kLockstepDays) {
-      std::array<const DayForcing*, kLockstepDays> forcing;
-      for (std::size_t l = 0; l < count; ++l) forcing[l] = &s[l]->forcing;
-      st = simulate_days(*m, forcing, options.integrator);
-    } else {
-      for (std::size_t l = 0; l < count; ++l) st[l] = simulate_day(*m, s[l]->forcing, options.integrator);
-    }
+    const std::array<DayStatistics, kLockstepDays> st = simulate_days(*m, s->forcing, options.integrator);
     const double integration_s = seconds_since(t) / static_cast<double>(count);
     for (std::size_t l = 0; l < count; ++l) {
       const std::size_t i = first + l;

@@ -200,14 +200,15 @@ DayForcing day_forcing(const CaseModel& model, std::uint64_t seed, std::uint64_t
 DayStatistics simulate_day(const CaseModel& model, const DayForcing& forcing, const IntegratorOptions& options,
                            std::vector<double>* trace = nullptr);
 
-// Days run_case integrates together (surge.hpp integrate_days): four overlap
-// the RK4 dependency chains best on the 2-core CI machine (bench/,
-// BM_DayIntegrationLockStep: 2 and 8 are slower).
+// Days run_case integrates together (surge.hpp integrate_days), as the lanes
+// of two 2-double vectors. On the 2-core CI machine (bench/): integration
+// alone costs 4.0 ms a day with 2, 2.55 with 4 and 2.35 with 8, but a 500-day
+// case is fastest with 4 (eight days' records no longer stay in cache).
 inline constexpr std::size_t kLockstepDays = 4;
-// kLockstepDays days of a prepared case in lock step; day l's statistics equal
-// simulate_day(model, *forcing[l], options) bit for bit.
+// kLockstepDays days of a prepared case in lock step (their records
+// interleaved); day l's statistics equal simulate_day on day l alone, bit for bit.
 std::array<DayStatistics, kLockstepDays> simulate_days(const CaseModel& model,
-                                                      const std::array<const DayForcing*, kLockstepDays>& forcing,
+                                                      const LockstepForcing<kLockstepDays>& forcing,
                                                       const IntegratorOptions& options);
 
 }  // namespace towdb::simulation

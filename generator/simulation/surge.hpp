@@ -23,6 +23,17 @@
 // integrate_days advance several days in lock step on one core (throughput
 // only: each day's arithmetic is that of integrate_day).
 //
+// Lock step (integrate_days): K days' records are interleaved sample by sample
+// (LockstepForcing) and the K days are the K lanes of one vector of doubles
+// (GCC vector extensions; lanes::Lanes<K>). On an interval where no day needs
+// substeps, one RK4 step advances all K days with vector operations; otherwise
+// each day takes its own substeps with the scalar code. Every lane performs
+// the IEEE operations of the scalar code in the same order (no fused
+// multiply-add: the build targets baseline x86-64, where none exists), so a
+// day's results are bit-identical whichever path or group it ran in. Tension
+// laws are therefore written once, as templates on the number type (double or
+// lanes::Lanes<K>), with the lanes:: helpers for max, min, clamp and select.
+//
 // Integrator: classical RK4. The step is the forcing interval dt, split into
 // m substeps where the local line stiffness makes the relative surge mode fast
 // (snap loads): m = ceil(h_needed / ...), with omega_loc h <= max_omega_h and
@@ -38,7 +49,10 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "common/error.hpp"
@@ -52,6 +66,140 @@
 #endif
 
 namespace towdb::simulation {
+
+// Element-wise arithmetic shared by the scalar and the lock-step paths. Each
+// helper is exactly the comparison-and-choice of the std:: function named,
+// so double and Lanes<K> give the same bits lane by lane.
+namespace lanes {
+
+// The baseline x86-64 vector (SSE2): two doubles, and its comparison mask.
+typedef double Half __attribute__((vector_size(16)));
+typedef std::int64_t HalfMask __attribute__((vector_size(16)));
+
+// K doubles (K = 2, 4, 8) as K/2 native two-lane vectors: every operation
+// acts on the halves independently, so K = 4 gives the processor two
+// independent dependency chains (wider GCC vectors are lowered to slow code
+// on a baseline build, and an AVX build would need a second ABI).
+template <std::size_t K>
+struct Lanes {
+  static_assert(K == 2 || K == 4 || K == 8, "lanes: 2, 4 or 8");
+  static constexpr std::size_t kHalves = K / 2;
+  Half h[kHalves];
+  double operator[](std::size_t l) const { return h[l / 2][l % 2]; }
+  void set(std::size_t l, double x) { h[l / 2][l % 2] = x; }
+};
+
+// A lane-wise comparison: -1 where it holds, 0 elsewhere (also used as counts).
+template <std::size_t K>
+struct LaneMask {
+  HalfMask h[K / 2];
+  std::int64_t operator[](std::size_t l) const { return h[l / 2][l % 2]; }
+  void set(std::size_t l, std::int64_t x) { h[l / 2][l % 2] = x; }
+};
+
+#define TOWDB_LANES_BINARY(OP, RESULT)                                                   \
+  template <std::size_t K>                                                               \
+  TOWDB_SURGE_INLINE RESULT<K> operator OP(const Lanes<K>& a, const Lanes<K>& b) {       \
+    RESULT<K> r;                                                                         \
+    for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = a.h[i] OP b.h[i];                   \
+    return r;                                                                            \
+  }                                                                                      \
+  template <std::size_t K>                                                               \
+  TOWDB_SURGE_INLINE RESULT<K> operator OP(const Lanes<K>& a, double b) {                \
+    RESULT<K> r;                                                                         \
+    for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = a.h[i] OP b;                        \
+    return r;                                                                            \
+  }                                                                                      \
+  template <std::size_t K>                                                               \
+  TOWDB_SURGE_INLINE RESULT<K> operator OP(double a, const Lanes<K>& b) {                \
+    RESULT<K> r;                                                                         \
+    for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = a OP b.h[i];                        \
+    return r;                                                                            \
+  }
+TOWDB_LANES_BINARY(+, Lanes)
+TOWDB_LANES_BINARY(-, Lanes)
+TOWDB_LANES_BINARY(*, Lanes)
+TOWDB_LANES_BINARY(/, Lanes)
+TOWDB_LANES_BINARY(<, LaneMask)
+TOWDB_LANES_BINARY(<=, LaneMask)
+TOWDB_LANES_BINARY(>, LaneMask)
+TOWDB_LANES_BINARY(!=, LaneMask)
+#undef TOWDB_LANES_BINARY
+
+template <std::size_t K>
+TOWDB_SURGE_INLINE Lanes<K> operator-(const Lanes<K>& a) {
+  Lanes<K> r;
+  for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = -a.h[i];
+  return r;
+}
+template <std::size_t K>
+TOWDB_SURGE_INLINE Lanes<K>& operator+=(Lanes<K>& a, const Lanes<K>& b) {
+  return a = a + b;
+}
+template <std::size_t K>
+TOWDB_SURGE_INLINE LaneMask<K> operator&(const LaneMask<K>& a, const LaneMask<K>& b) {
+  LaneMask<K> r;
+  for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = a.h[i] & b.h[i];
+  return r;
+}
+template <std::size_t K>
+TOWDB_SURGE_INLINE LaneMask<K> operator~(const LaneMask<K>& a) {
+  LaneMask<K> r;
+  for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = ~a.h[i];
+  return r;
+}
+template <std::size_t K>
+TOWDB_SURGE_INLINE LaneMask<K>& operator-=(LaneMask<K>& a, const LaneMask<K>& b) {
+  for (std::size_t i = 0; i < K / 2; ++i) a.h[i] -= b.h[i];
+  return a;
+}
+
+template <typename T>
+inline constexpr std::size_t kWidth = sizeof(T) / sizeof(double);
+
+// x in every lane (x itself for double).
+template <typename T>
+TOWDB_SURGE_INLINE T splat(double x) {
+  if constexpr (std::is_same_v<T, double>) {
+    return x;
+  } else {
+    T r;
+    for (std::size_t i = 0; i < T::kHalves; ++i) r.h[i] = Half{x, x};
+    return r;
+  }
+}
+// cond ? a : b, lane by lane.
+TOWDB_SURGE_INLINE double select(bool cond, double a, double b) { return cond ? a : b; }
+template <std::size_t K>
+TOWDB_SURGE_INLINE Lanes<K> select(const LaneMask<K>& cond, const Lanes<K>& a, const Lanes<K>& b) {
+  Lanes<K> r;
+  for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = cond.h[i] ? a.h[i] : b.h[i];
+  return r;
+}
+// Whether any lane of a comparison holds (the comparison itself for double):
+// lets a law skip work that no lane needs, as the scalar code's branch does.
+TOWDB_SURGE_INLINE bool any(bool cond) { return cond; }
+template <std::size_t K>
+TOWDB_SURGE_INLINE bool any(const LaneMask<K>& cond) {
+  HalfMask r = cond.h[0];
+  for (std::size_t i = 1; i < K / 2; ++i) r |= cond.h[i];
+  return (r[0] | r[1]) != 0;
+}
+template <typename T>
+TOWDB_SURGE_INLINE T max(T a, T b) {  // std::max: a < b ? b : a
+  return select(a < b, b, a);
+}
+template <typename T>
+TOWDB_SURGE_INLINE T min(T a, T b) {  // std::min: b < a ? b : a
+  return select(b < a, b, a);
+}
+template <typename T>
+TOWDB_SURGE_INLINE T clamp(T v, double lo, double hi) {  // std::clamp
+  const T l = splat<T>(lo), h = splat<T>(hi);
+  return select(v < l, l, select(h < v, h, v));
+}
+
+}  // namespace lanes
 
 struct SurgeParameters {
   double tug_mass_kg = 0.0;          // mass + surge added mass
@@ -76,6 +224,37 @@ struct DayForcing {
   void validate() const;
 };
 
+// K days' forcing interleaved sample by sample: record[i K + l] is day l's
+// sample i (one vector load gives sample i of all K days).
+template <std::size_t K>
+struct LockstepForcing {
+  double dt_s = 1.0;
+  std::vector<double> tug_force_n, tow_force_n, xi_ns_m, xi_ns_dot_m_s;  // n K values each
+
+  std::size_t size() const { return tug_force_n.size() / K; }  // n
+  // Sizes the records for n samples per day (contents unspecified).
+  void resize(std::size_t n) {
+    for (auto* r : {&tug_force_n, &tow_force_n, &xi_ns_m, &xi_ns_dot_m_s}) r->resize(n * K);
+  }
+  // Lane `to` becomes a copy of lane `from`.
+  void copy_lane(std::size_t from, std::size_t to) {
+    TOWDB_ASSERT(from < K && to < K);
+    for (auto* r : {&tug_force_n, &tow_force_n, &xi_ns_m, &xi_ns_dot_m_s}) {
+      for (std::size_t i = 0; i < size(); ++i) (*r)[i * K + to] = (*r)[i * K + from];
+    }
+  }
+  // Copies a whole day into lane l (records already sized to day.size()).
+  void set_day(std::size_t l, const DayForcing& day) {
+    TOWDB_ASSERT(l < K && day.size() == size());
+    for (std::size_t i = 0; i < day.size(); ++i) {
+      tug_force_n[i * K + l] = day.tug_force_n[i];
+      tow_force_n[i * K + l] = day.tow_force_n[i];
+      xi_ns_m[i * K + l] = day.xi_ns_m[i];
+      xi_ns_dot_m_s[i * K + l] = day.xi_ns_dot_m_s[i];
+    }
+  }
+};
+
 struct IntegratorOptions {
   double warmup_s = 1800.0;     // start-up time simulated before the day; > 5 relative-mode decay times
   double max_omega_h = 0.4;     // omega_loc * h bound (RK4 phase error per step < 1e-4 rad at 0.4)
@@ -95,25 +274,24 @@ struct DayStatistics {
   long samples = 0;             // forcing samples recorded
 };
 
-// The tension law: a type with
-//   double tension(double xi_m, double xi_dot_m_s) const;       // tau [N], already >= -T
-//   double stiffness(double xi_m, double xi_dot_m_s) const;     // d tau / d xi [N/m]
-//   double damping(double xi_m, double xi_dot_m_s) const;       // d tau / d xi' [N s/m]
-//   double mean_tension_n() const;                              // T (slack when tau <= -T)
+// The tension law: a type with, for T = double and T = lanes::Lanes<K>,
+//   template <typename T> T tension(T xi_m, T xi_dot_m_s) const;    // tau [N], already >= -T
+//   template <typename T> T stiffness(T xi_m, T xi_dot_m_s) const;  // d tau / d xi [N/m]
+//   template <typename T> T damping(T xi_m, T xi_dot_m_s) const;    // d tau / d xi' [N s/m]
+//   double mean_tension_n() const;                                  // T (slack when tau <= -T)
+// written with +, -, *, / and the lanes:: helpers only (so that every lane
+// computes what the double version computes).
 // Integrates one day; optional `trace` receives tau at the forcing samples:
 // trace[k] = tau at t = k dt, k = 0 .. N - 1.
 template <typename TensionLaw>
 DayStatistics integrate_day(const SurgeParameters& p, const DayForcing& f, const TensionLaw& law,
                             const IntegratorOptions& options, std::vector<double>* trace = nullptr);
 
-// K days with the same record length and step, integrated in lock step: each
-// forcing interval is one RK4 step for every day when none needs substeps,
-// with the K days' stages interleaved (their dependency chains overlap in the
-// processor; about 2x the single-day throughput at K = 4), and day by day
-// otherwise. Day l's statistics are bit-identical to integrate_day on f[l]
-// alone: every day performs the same operations in the same order.
+// K days with the same record length and step, integrated in lock step (see
+// the file comment). Day l's statistics (and trace) are bit-identical to
+// integrate_day on day l alone.
 template <typename TensionLaw, std::size_t K>
-std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const std::array<const DayForcing*, K>& f,
+std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const LockstepForcing<K>& f,
                                             const TensionLaw& law, const IntegratorOptions& options,
                                             const std::array<std::vector<double>*, K>& trace = {});
 
@@ -122,9 +300,17 @@ std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const std:
 
 namespace detail {
 
-struct State {
-  double x1, v1, x7, v7;
+template <typename T>
+struct StateOf {
+  T x1, v1, x7, v7;
 };
+using State = StateOf<double>;
+
+template <typename T>
+struct ForcingOf {
+  T f1, f7, xi_ns, xi_ns_dot;
+};
+using Forcing = ForcingOf<double>;
 
 // The four samples around the interval [i, i + 1] of a periodic record of n
 // samples: i - 1, i, i + 1, i + 2, wrapped (computed once per interval, without
@@ -138,44 +324,63 @@ inline Stencil stencil(std::size_t i, std::size_t n) {
   return {i == 0 ? n - 1 : i - 1, i, i1, i1 + 1 == n ? 0 : i1 + 1};
 }
 
+// One day's four records, read with a stride (1 for a DayForcing, K for lane
+// l of a LockstepForcing<K>).
+template <std::size_t Stride>
+struct Records {
+  const double *f1, *f7, *xi, *xi_dot;
+};
+
+inline Records<1> records_of(const DayForcing& f) {
+  return {f.tug_force_n.data(), f.tow_force_n.data(), f.xi_ns_m.data(), f.xi_ns_dot_m_s.data()};
+}
+
+template <std::size_t K>
+Records<K> records_of(const LockstepForcing<K>& f, std::size_t lane) {
+  return {f.tug_force_n.data() + lane, f.tow_force_n.data() + lane, f.xi_ns_m.data() + lane,
+          f.xi_ns_dot_m_s.data() + lane};
+}
+
 // Catmull-Rom interpolation of a periodic record at sample i + s, s in [0, 1].
-inline double interpolate(const std::vector<double>& y, const Stencil& c, double s) {
-  const double y0 = y[c.im1], y1 = y[c.i], y2 = y[c.i1], y3 = y[c.i2];
+template <std::size_t S>
+inline double interpolate(const double* y, const Stencil& c, double s) {
+  const double y0 = y[c.im1 * S], y1 = y[c.i * S], y2 = y[c.i1 * S], y3 = y[c.i2 * S];
   const double s2 = s * s, s3 = s2 * s;
   return 0.5 * ((2.0 * y1) + (-y0 + y2) * s + (2.0 * y0 - 5.0 * y1 + 4.0 * y2 - y3) * s2 +
                 (-y0 + 3.0 * y1 - 3.0 * y2 + y3) * s3);
 }
 
-struct Forcing {
-  double f1, f7, xi_ns, xi_ns_dot;
-};
-
 // Catmull-Rom at s = 1/2: (-y0 + 9 y1 + 9 y2 - y3) / 16.
-inline double midpoint(const std::vector<double>& y, const Stencil& c) {
-  return (9.0 * (y[c.i] + y[c.i1]) - y[c.im1] - y[c.i2]) * 0.0625;
+template <typename T>
+TOWDB_SURGE_INLINE T midpoint(T y0, T y1, T y2, T y3) {
+  return (9.0 * (y1 + y2) - y0 - y3) * 0.0625;
 }
 
-inline Forcing forcing_at(const DayForcing& f, const Stencil& c, double s) {
-  return {interpolate(f.tug_force_n, c, s), interpolate(f.tow_force_n, c, s), interpolate(f.xi_ns_m, c, s),
-          interpolate(f.xi_ns_dot_m_s, c, s)};
+template <std::size_t S>
+inline double midpoint(const double* y, const Stencil& c) {
+  return midpoint(y[c.im1 * S], y[c.i * S], y[c.i1 * S], y[c.i2 * S]);
 }
 
-inline Forcing midpoint_forcing(const DayForcing& f, const Stencil& c) {
-  return {midpoint(f.tug_force_n, c), midpoint(f.tow_force_n, c), midpoint(f.xi_ns_m, c),
-          midpoint(f.xi_ns_dot_m_s, c)};
+template <std::size_t S>
+inline Forcing forcing_at(const Records<S>& f, const Stencil& c, double s) {
+  return {interpolate<S>(f.f1, c, s), interpolate<S>(f.f7, c, s), interpolate<S>(f.xi, c, s),
+          interpolate<S>(f.xi_dot, c, s)};
 }
 
-inline Forcing sample_at(const DayForcing& f, std::size_t i) {
-  return {f.tug_force_n[i], f.tow_force_n[i], f.xi_ns_m[i], f.xi_ns_dot_m_s[i]};
+template <std::size_t S>
+inline Forcing midpoint_forcing(const Records<S>& f, const Stencil& c) {
+  return {midpoint<S>(f.f1, c), midpoint<S>(f.f7, c), midpoint<S>(f.xi, c), midpoint<S>(f.xi_dot, c)};
 }
 
-inline State axpy(const State& y, double h, const State& k) {
+template <std::size_t S>
+inline Forcing sample_at(const Records<S>& f, std::size_t i) {
+  return {f.f1[i * S], f.f7[i * S], f.xi[i * S], f.xi_dot[i * S]};
+}
+
+template <typename T>
+TOWDB_SURGE_INLINE StateOf<T> axpy(const StateOf<T>& y, double h, const StateOf<T>& k) {
   return {y.x1 + h * k.x1, y.v1 + h * k.v1, y.x7 + h * k.x7, y.v7 + h * k.v7};
 }
-
-}  // namespace detail
-
-namespace detail {
 
 // The per-day arithmetic of the RK4 loop, shared by the single-day and the
 // lock-step paths so that both perform the same operations in the same order
@@ -199,24 +404,36 @@ struct SurgeKernel {
         hull_rate(std::max(p_.tug_damping_n_s_m / p_.tug_mass_kg, p_.tow_damping_n_s_m / p_.tow_mass_kg)) {}
 
   // Derivative of the state; also returns the tension it used.
-  TOWDB_SURGE_INLINE State derivative(const State& y0, const Forcing& g, double* tau_out) const {
-    const double xi = y0.x1 * p.cos_alpha_tug - y0.x7 * p.cos_alpha_tow + g.xi_ns;
-    const double xi_dot = y0.v1 * p.cos_alpha_tug - y0.v7 * p.cos_alpha_tow + g.xi_ns_dot;
-    const double tau = law.tension(xi, xi_dot);
+  template <typename T>
+  TOWDB_SURGE_INLINE StateOf<T> derivative(const StateOf<T>& y0, const ForcingOf<T>& g, T* tau_out) const {
+    const T xi = y0.x1 * p.cos_alpha_tug - y0.x7 * p.cos_alpha_tow + g.xi_ns;
+    const T xi_dot = y0.v1 * p.cos_alpha_tug - y0.v7 * p.cos_alpha_tow + g.xi_ns_dot;
+    const T tau = law.tension(xi, xi_dot);
     *tau_out = tau;
-    return State{y0.v1, (-tau * p.cos_alpha_tug + g.f1 - p.tug_damping_n_s_m * y0.v1) / p.tug_mass_kg, y0.v7,
-                 (tau * p.cos_alpha_tow + g.f7 - p.tow_damping_n_s_m * y0.v7) / p.tow_mass_kg};
+    return StateOf<T>{y0.v1, (-tau * p.cos_alpha_tug + g.f1 - p.tug_damping_n_s_m * y0.v1) / p.tug_mass_kg, y0.v7,
+                      (tau * p.cos_alpha_tow + g.f7 - p.tow_damping_n_s_m * y0.v7) / p.tow_mass_kg};
   }
 
-  // Substeps for the interval starting at state y with forcing g0: the local
-  // stiffness and damping of the line bound omega_loc h and beta_loc h.
-  TOWDB_SURGE_INLINE int substeps(const State& y, const Forcing& g0, double dt,
-                                  const IntegratorOptions& options) const {
-    const double xi = y.x1 * p.cos_alpha_tug - y.x7 * p.cos_alpha_tow + g0.xi_ns;
-    const double xi_dot = y.v1 * p.cos_alpha_tug - y.v7 * p.cos_alpha_tow + g0.xi_ns_dot;
-    const double k_loc = std::max(0.0, law.stiffness(xi, xi_dot));
-    const double c_loc = std::max(0.0, law.damping(xi, xi_dot));
-    const double rate = std::max(std::sqrt(k_loc * inv_mass_line), c_loc * inv_mass_line + hull_rate);
+  // The rate that bounds the step on the interval starting at state y with
+  // forcing g0: max(omega_loc, beta_loc) from the local stiffness and damping.
+  template <typename T>
+  TOWDB_SURGE_INLINE T rate(const StateOf<T>& y, const ForcingOf<T>& g0) const {
+    const T xi = y.x1 * p.cos_alpha_tug - y.x7 * p.cos_alpha_tow + g0.xi_ns;
+    const T xi_dot = y.v1 * p.cos_alpha_tug - y.v7 * p.cos_alpha_tow + g0.xi_ns_dot;
+    const T zero = lanes::splat<T>(0.0);
+    const T k_line = lanes::max(zero, law.stiffness(xi, xi_dot)) * inv_mass_line;
+    const T c_loc = lanes::max(zero, law.damping(xi, xi_dot));
+    T omega;
+    if constexpr (std::is_same_v<T, double>) {
+      omega = std::sqrt(k_line);
+    } else {
+      for (std::size_t l = 0; l < lanes::kWidth<T>; ++l) omega.set(l, std::sqrt(k_line[l]));
+    }
+    return lanes::max(omega, c_loc * inv_mass_line + hull_rate);
+  }
+
+  // Substeps for an interval of length dt at that rate.
+  TOWDB_SURGE_INLINE static int substeps(double rate, double dt, const IntegratorOptions& options) {
     if (!(rate * dt > options.max_omega_h)) return 1;  // also NaN: the caller's checks report it
     return std::min(options.max_substeps, static_cast<int>(std::ceil(rate * dt / options.max_omega_h)));
   }
@@ -227,8 +444,8 @@ struct SurgeKernel {
   TOWDB_SURGE_INLINE void record(DayStatistics& stats, bool& was_slack, double tau, double h, bool first_substep,
                                  std::size_t sample_index, std::vector<double>* trace) const {
     const bool slack = tau <= -mean;
-    stats.max_tension_n = std::max(stats.max_tension_n, tau);
-    stats.min_tension_n = std::min(stats.min_tension_n, tau);
+    stats.max_tension_n = lanes::max(stats.max_tension_n, tau);
+    stats.min_tension_n = lanes::min(stats.min_tension_n, tau);
     if (slack) stats.slack_time_s += h;
     if (was_slack && !slack) ++stats.snatch_events;
     was_slack = slack;
@@ -240,8 +457,9 @@ struct SurgeKernel {
     }
   }
 
-  TOWDB_SURGE_INLINE static void advance(State& y, double h, const State& k1, const State& k2, const State& k3,
-                                         const State& k4) {
+  template <typename T>
+  TOWDB_SURGE_INLINE static void advance(StateOf<T>& y, double h, const StateOf<T>& k1, const StateOf<T>& k2,
+                                         const StateOf<T>& k3, const StateOf<T>& k4) {
     y.x1 += h / 6.0 * (k1.x1 + 2.0 * k2.x1 + 2.0 * k3.x1 + k4.x1);
     y.v1 += h / 6.0 * (k1.v1 + 2.0 * k2.v1 + 2.0 * k3.v1 + k4.v1);
     y.x7 += h / 6.0 * (k1.x7 + 2.0 * k2.x7 + 2.0 * k3.x7 + k4.x7);
@@ -249,10 +467,11 @@ struct SurgeKernel {
   }
 
   // One forcing interval [i, i + 1] of one day in m substeps (the general path).
-  void interval(State& y, const DayForcing& f, const Stencil& c, const Forcing& g0, int m, bool recording,
-                std::size_t sample_index, DayStatistics& stats, bool& was_slack,
+  template <std::size_t S>
+  void interval(State& y, double dt, const Records<S>& f, const Stencil& c, const Forcing& g0, int m,
+                bool recording, std::size_t sample_index, DayStatistics& stats, bool& was_slack,
                 std::vector<double>* trace) const {
-    const double h = f.dt_s / m;
+    const double h = dt / m;
     Forcing ga = g0;
     for (int j = 0; j < m; ++j) {
       const Forcing gm = m == 1 ? midpoint_forcing(f, c) : forcing_at(f, c, (j + 0.5) / m);
@@ -270,93 +489,189 @@ struct SurgeKernel {
   }
 };
 
+// The lock-step statistics of K days, one lane per day (what
+// SurgeKernel::record accumulates, lane by lane).
+template <std::size_t K>
+struct LaneStatistics {
+  using V = lanes::Lanes<K>;
+  using Mask = lanes::LaneMask<K>;
+  V max_tension, min_tension, slack_time, sum, sum_sq;
+  Mask snatch_events, was_slack;  // counts; masks (-1 = slack)
+  std::array<long, K> substeps{}, samples{};
+
+  void to(std::size_t l, DayStatistics& s, bool& slack) const {
+    s.max_tension_n = max_tension[l];
+    s.min_tension_n = min_tension[l];
+    s.slack_time_s = slack_time[l];
+    s.snatch_events = static_cast<int>(snatch_events[l]);
+    s.substeps = substeps[l];
+    s.tension_sum_n = sum[l];
+    s.tension_sum_sq_n2 = sum_sq[l];
+    s.samples = samples[l];
+    slack = was_slack[l] != 0;
+  }
+  void from(std::size_t l, const DayStatistics& s, bool slack) {
+    max_tension.set(l, s.max_tension_n);
+    min_tension.set(l, s.min_tension_n);
+    slack_time.set(l, s.slack_time_s);
+    snatch_events.set(l, s.snatch_events);
+    substeps[l] = s.substeps;
+    sum.set(l, s.tension_sum_n);
+    sum_sq.set(l, s.tension_sum_sq_n2);
+    samples[l] = s.samples;
+    was_slack.set(l, slack ? -1 : 0);
+  }
+  // SurgeKernel::record for the first (only) substep of an interval.
+  TOWDB_SURGE_INLINE void record(V tau, double minus_mean, double h, std::size_t sample_index,
+                                 const std::array<std::vector<double>*, K>& trace) {
+    const Mask slack = tau <= lanes::splat<V>(minus_mean);
+    max_tension = lanes::max(max_tension, tau);
+    min_tension = lanes::min(min_tension, tau);
+    slack_time = lanes::select(slack, slack_time + h, slack_time);
+    snatch_events -= was_slack & ~slack;
+    was_slack = slack;
+    sum += tau;
+    sum_sq += tau * tau;
+    for (std::size_t l = 0; l < K; ++l) {
+      ++samples[l];
+      if (trace[l]) (*trace[l])[sample_index] = tau[l];
+    }
+  }
+};
+
+template <std::size_t K>
+TOWDB_SURGE_INLINE lanes::Lanes<K> load(const std::vector<double>& r, std::size_t i) {
+  lanes::Lanes<K> v;
+  std::memcpy(&v, r.data() + i * K, sizeof v);
+  return v;
+}
+
+template <std::size_t K>
+TOWDB_SURGE_INLINE ForcingOf<lanes::Lanes<K>> sample_lanes(const LockstepForcing<K>& f, std::size_t i) {
+  return {load<K>(f.tug_force_n, i), load<K>(f.tow_force_n, i), load<K>(f.xi_ns_m, i),
+          load<K>(f.xi_ns_dot_m_s, i)};
+}
+
+template <std::size_t K>
+TOWDB_SURGE_INLINE lanes::Lanes<K> midpoint_lanes(const std::vector<double>& r, const Stencil& c) {
+  return midpoint(load<K>(r, c.im1), load<K>(r, c.i), load<K>(r, c.i1), load<K>(r, c.i2));
+}
+
+template <std::size_t K>
+TOWDB_SURGE_INLINE ForcingOf<lanes::Lanes<K>> midpoint_lanes(const LockstepForcing<K>& f, const Stencil& c) {
+  return {midpoint_lanes<K>(f.tug_force_n, c), midpoint_lanes<K>(f.tow_force_n, c), midpoint_lanes<K>(f.xi_ns_m, c),
+          midpoint_lanes<K>(f.xi_ns_dot_m_s, c)};
+}
+
+// The loop shared by integrate_day (K = 1, one DayForcing) and integrate_days.
+template <typename TensionLaw>
+DayStatistics integrate_one(const SurgeKernel<TensionLaw>& kernel, const DayForcing& f,
+                            const IntegratorOptions& options, std::vector<double>* trace) {
+  const std::size_t n = f.size();
+  const double dt = f.dt_s;
+  const Records<1> r = records_of(f);
+  const std::size_t warmup_samples = static_cast<std::size_t>(std::ceil(options.warmup_s / dt));
+  const std::size_t start = (n - warmup_samples % n) % n;  // periodic: warm-up is the day's own end
+  const std::size_t total = warmup_samples + n;
+  DayStatistics stats;
+  stats.max_tension_n = -kernel.mean;
+  stats.min_tension_n = std::numeric_limits<double>::infinity();
+  if (trace) trace->assign(n, 0.0);
+  State y{0.0, 0.0, 0.0, 0.0};
+  bool was_slack = false;
+  std::size_t i = start;
+  for (std::size_t step = 0; step < total; ++step) {
+    const Stencil c = stencil(i, n);
+    const bool recording = step >= warmup_samples;
+    const Forcing g0 = sample_at(r, i);
+    const int m = kernel.substeps(kernel.rate(y, g0), dt, options);
+    kernel.interval(y, dt, r, c, g0, m, recording, recording ? step - warmup_samples : 0, stats, was_slack, trace);
+    i = c.i1;
+  }
+  return stats;
+}
+
 }  // namespace detail
 
 template <typename TensionLaw, std::size_t K>
-std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const std::array<const DayForcing*, K>& f,
+std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const LockstepForcing<K>& f,
                                             const TensionLaw& law, const IntegratorOptions& options,
                                             const std::array<std::vector<double>*, K>& trace) {
   using detail::Forcing;
+  using detail::ForcingOf;
   using detail::State;
-  static_assert(K >= 1);
-  const std::size_t n = f[0]->size();
-  const double dt = f[0]->dt_s;
-  for (std::size_t l = 1; l < K; ++l) {
-    TOWDB_ASSERT(f[l]->size() == n && f[l]->dt_s == dt);
-  }
+  using detail::StateOf;
+  using V = lanes::Lanes<K>;
+  const std::size_t n = f.size();
+  const double dt = f.dt_s;
+  TOWDB_ASSERT(f.tow_force_n.size() == n * K && f.xi_ns_m.size() == n * K && f.xi_ns_dot_m_s.size() == n * K);
   const detail::SurgeKernel<TensionLaw> kernel(p, law);
 
   const std::size_t warmup_samples = static_cast<std::size_t>(std::ceil(options.warmup_s / dt));
   const std::size_t start = (n - warmup_samples % n) % n;  // periodic: warm-up is the day's own end
   const std::size_t total = warmup_samples + n;
 
-  std::array<DayStatistics, K> stats;
-  std::array<State, K> y;
-  std::array<bool, K> was_slack;
+  detail::LaneStatistics<K> stats{};
+  stats.max_tension = lanes::splat<V>(-kernel.mean);
+  stats.min_tension = lanes::splat<V>(std::numeric_limits<double>::infinity());
   for (std::size_t l = 0; l < K; ++l) {
-    stats[l].max_tension_n = -kernel.mean;
-    stats[l].min_tension_n = std::numeric_limits<double>::infinity();
     if (trace[l]) trace[l]->assign(n, 0.0);
-    y[l] = State{0.0, 0.0, 0.0, 0.0};
-    was_slack[l] = false;
   }
+  const V zero = lanes::splat<V>(0.0);
+  StateOf<V> y{zero, zero, zero, zero};
 
   std::size_t i = start;
   for (std::size_t step = 0; step < total; ++step) {
     const detail::Stencil c = detail::stencil(i, n);
     const bool recording = step >= warmup_samples;
     const std::size_t sample_index = recording ? step - warmup_samples : 0;
-    std::array<Forcing, K> g0;
-    std::array<int, K> m;
-    int most = 1;
-    for (std::size_t l = 0; l < K; ++l) {
-      g0[l] = detail::sample_at(*f[l], i);
-      m[l] = kernel.substeps(y[l], g0[l], dt, options);
-      most = std::max(most, m[l]);
-    }
-    if (K > 1 && most == 1) {
-      // Every day takes one step: the days' RK4 stages are interleaved, so
-      // their independent dependency chains overlap in the processor. Same
-      // operations per day as kernel.interval with m = 1.
-      std::array<Forcing, K> gm, gb;
-      std::array<State, K> k1, k2, k3, k4;
-      std::array<double, K> tau;
-      double unused = 0.0;
-      for (std::size_t l = 0; l < K; ++l) {
-        gm[l] = detail::midpoint_forcing(*f[l], c);
-        gb[l] = detail::sample_at(*f[l], c.i1);
-      }
-      for (std::size_t l = 0; l < K; ++l) k1[l] = kernel.derivative(y[l], g0[l], &tau[l]);
-      if (recording) {
-        for (std::size_t l = 0; l < K; ++l) {
-          kernel.record(stats[l], was_slack[l], tau[l], dt, true, sample_index, trace[l]);
-        }
-      }
-      for (std::size_t l = 0; l < K; ++l) {
-        k2[l] = kernel.derivative(detail::axpy(y[l], 0.5 * dt, k1[l]), gm[l], &unused);
-      }
-      for (std::size_t l = 0; l < K; ++l) {
-        k3[l] = kernel.derivative(detail::axpy(y[l], 0.5 * dt, k2[l]), gm[l], &unused);
-      }
-      for (std::size_t l = 0; l < K; ++l) k4[l] = kernel.derivative(detail::axpy(y[l], dt, k3[l]), gb[l], &unused);
-      for (std::size_t l = 0; l < K; ++l) {
-        detail::SurgeKernel<TensionLaw>::advance(y[l], dt, k1[l], k2[l], k3[l], k4[l]);
-        ++stats[l].substeps;
-      }
+    const ForcingOf<V> g0 = detail::sample_lanes(f, i);
+    const V rate = kernel.rate(y, g0);
+    bool one_step = true;
+    for (std::size_t l = 0; l < K; ++l) one_step = one_step && !(rate[l] * dt > options.max_omega_h);
+    if (one_step) {
+      // Every day takes one step: kernel.interval with m = 1, all lanes at once.
+      const ForcingOf<V> gm = detail::midpoint_lanes(f, c);
+      const ForcingOf<V> gb = detail::sample_lanes(f, c.i1);
+      V tau, unused;
+      const StateOf<V> k1 = kernel.derivative(y, g0, &tau);
+      if (recording) stats.record(tau, -kernel.mean, dt, sample_index, trace);
+      const StateOf<V> k2 = kernel.derivative(detail::axpy(y, 0.5 * dt, k1), gm, &unused);
+      const StateOf<V> k3 = kernel.derivative(detail::axpy(y, 0.5 * dt, k2), gm, &unused);
+      const StateOf<V> k4 = kernel.derivative(detail::axpy(y, dt, k3), gb, &unused);
+      detail::SurgeKernel<TensionLaw>::advance(y, dt, k1, k2, k3, k4);
+      for (std::size_t l = 0; l < K; ++l) ++stats.substeps[l];
     } else {
+      // Some day needs substeps: each day takes its own, with the scalar code.
       for (std::size_t l = 0; l < K; ++l) {
-        kernel.interval(y[l], *f[l], c, g0[l], m[l], recording, sample_index, stats[l], was_slack[l], trace[l]);
+        const detail::Records<K> r = detail::records_of(f, l);
+        State yl{y.x1[l], y.v1[l], y.x7[l], y.v7[l]};
+        DayStatistics sl;
+        bool was_slack = false;
+        stats.to(l, sl, was_slack);
+        const int m = kernel.substeps(rate[l], dt, options);
+        kernel.interval(yl, dt, r, c, detail::sample_at(r, i), m, recording, sample_index, sl, was_slack, trace[l]);
+        stats.from(l, sl, was_slack);
+        y.x1.set(l, yl.x1);
+        y.v1.set(l, yl.v1);
+        y.x7.set(l, yl.x7);
+        y.v7.set(l, yl.v7);
       }
     }
     i = c.i1;
   }
-  return stats;
+  std::array<DayStatistics, K> out;
+  for (std::size_t l = 0; l < K; ++l) {
+    bool unused = false;
+    stats.to(l, out[l], unused);
+  }
+  return out;
 }
 
 template <typename TensionLaw>
 DayStatistics integrate_day(const SurgeParameters& p, const DayForcing& f, const TensionLaw& law,
                             const IntegratorOptions& options, std::vector<double>* trace) {
-  return integrate_days<TensionLaw, 1>(p, {&f}, law, options, {trace})[0];
+  return detail::integrate_one(detail::SurgeKernel<TensionLaw>(p, law), f, options, trace);
 }
 
 }  // namespace towdb::simulation

@@ -36,11 +36,18 @@ struct PolynomialCoefficients {
   // EQ-TOWLINE-11, without any slack or breaking-strength limit [N]. Inline:
   // the surge integrator calls it four times per RK4 step. The terms are summed
   // in coefficient order, which fixes the rounding (results are bit-reproducible).
-  double evaluate_n(double xi_m, double xi_dot_m_s) const {
-    const double x = xi_m, v = xi_dot_m_s;
-    const std::array<double, kCount> m = {x, v, x * x, x * v, v * v, x * x * x, x * x * v, x * v * v, v * v * v};
-    double tau = 0.0;
-    for (std::size_t k = 0; k < m.size(); ++k) tau += a[k] * m[k];
+  double evaluate_n(double xi_m, double xi_dot_m_s) const { return evaluate(xi_m, xi_dot_m_s); }
+  // The same for any number type with +, * and double * T (the surge
+  // integrator's vector lanes: each lane rounds exactly as evaluate_n does).
+  // (Forced inline: GCC 12 otherwise calls the vector version out of line.)
+  template <typename T>
+#if defined(__GNUC__)
+  [[gnu::always_inline]]
+#endif
+  inline T evaluate(T x, T v) const {
+    const T m[kCount] = {x, v, x * x, x * v, v * v, x * x * x, x * x * v, x * v * v, v * v * v};
+    T tau{};  // +0 in every lane
+    for (std::size_t k = 0; k < kCount; ++k) tau += a[k] * m[k];
     return tau;
   }
 };

@@ -22,11 +22,22 @@ namespace towdb::simulation {
 namespace {
 
 // A linear spring-dashpot line, slack below -T.
+// (Tension laws are templates on the number type: the integrator's lock-step
+// path evaluates them on vector lanes, surge.hpp.)
 struct LinearLine {
   double k = 0.0, c = 0.0, mean = 0.0;
-  double tension(double xi, double xi_dot) const { return std::max(-mean, k * xi + c * xi_dot); }
-  double stiffness(double, double) const { return k; }
-  double damping(double, double) const { return c; }
+  template <typename T>
+  T tension(T xi, T xi_dot) const {
+    return lanes::max(lanes::splat<T>(-mean), k * xi + c * xi_dot);
+  }
+  template <typename T>
+  T stiffness(T, T) const {
+    return lanes::splat<T>(k);
+  }
+  template <typename T>
+  T damping(T, T) const {
+    return lanes::splat<T>(c);
+  }
   double mean_tension_n() const { return mean; }
 };
 
@@ -104,11 +115,18 @@ TEST(SurgeIntegrator, ResonanceNearTheRelativeModeIsResolved) {  // surge-1 at r
 // A cubic-stiffening line (snap-like), slack below -2e5 N.
 struct CubicLine {
   double cubic_n_m3 = 1.0e5;
-  double tension(double xi, double xi_dot) const {
-    return std::max(-2.0e5, 3.0e5 * xi + cubic_n_m3 * xi * xi * xi + 1.0e4 * xi_dot);
+  template <typename T>
+  T tension(T xi, T xi_dot) const {
+    return lanes::max(lanes::splat<T>(-2.0e5), 3.0e5 * xi + cubic_n_m3 * xi * xi * xi + 1.0e4 * xi_dot);
   }
-  double stiffness(double xi, double) const { return 3.0e5 + 3.0 * cubic_n_m3 * xi * xi; }
-  double damping(double, double) const { return 1.0e4; }
+  template <typename T>
+  T stiffness(T xi, T) const {
+    return 3.0e5 + 3.0 * cubic_n_m3 * xi * xi;
+  }
+  template <typename T>
+  T damping(T, T) const {
+    return lanes::splat<T>(1.0e4);
+  }
   double mean_tension_n() const { return 2.0e5; }
 };
 
@@ -189,8 +207,12 @@ TEST(SurgeIntegrator, LockStepDaysEqualSingleDaysBitForBit) {  // surge-4
   IntegratorOptions o;
   o.warmup_s = 600.0;
   std::array<std::vector<double>, 4> lockstep_trace, single_trace;
+  LockstepForcing<4> lockstep;
+  lockstep.dt_s = dt;
+  lockstep.resize(n);
+  for (std::size_t l = 0; l < f.size(); ++l) lockstep.set_day(l, f[l]);
   const auto together = integrate_days<CubicLine, 4>(
-      p, {&f[0], &f[1], &f[2], &f[3]}, line, o,
+      p, lockstep, line, o,
       {&lockstep_trace[0], &lockstep_trace[1], &lockstep_trace[2], &lockstep_trace[3]});
   long substeps_min = std::numeric_limits<long>::max(), substeps_max = 0;
   for (std::size_t l = 0; l < f.size(); ++l) {
