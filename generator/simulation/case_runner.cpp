@@ -99,9 +99,10 @@ struct PolynomialLaw {
   bool straight_spring() const { return model == towline::AboveBreakingModel::kStraightSpring; }
   template <typename T>
   TOWDB_SURGE_INLINE T unlimited(T x, T v) const {
-    if (!straight_spring()) return extended(x, v);
     const T b = lanes::splat<T>(x_b);
-    return lanes::select(x > b, extended(b, v) + k_spring * (x - b), extended(x, v));
+    const auto above = x > b;
+    if (!straight_spring() || !lanes::any(above)) return extended(x, v);
+    return lanes::select(above, extended(b, v) + k_spring * (x - b), extended(x, v));
   }
   template <typename T>
   TOWDB_SURGE_INLINE T tension(T x, T v) const {
@@ -417,22 +418,29 @@ struct DayScratch {
   DayForcing forcing;
 };
 
+// The four records the integrator reads, from a synthesised day's workspace:
+// tug and tow forces f1 + f2, xi_ns and xi_ns', written every Stride values
+// from the four pointers (Stride = K: one lane of a lock-step group).
+template <std::size_t Stride>
+void write_records(const sea::DaySynthesizer::Workspace& w, double* tug, double* tow, double* xi, double* xi_dot) {
+  const auto f1_tug = w.linear(kF1Tug), f1_tow = w.linear(kF1Tow);
+  const auto f2_tug = w.drift(kF2Tug), f2_tow = w.drift(kF2Tow);
+  const auto xi_ns = w.linear(kXiNs), xi_ns_dot = w.linear(kXiNsDot);
+  for (std::size_t i = 0; i < f1_tug.size(); ++i) {
+    tug[i * Stride] = f1_tug[i] + f2_tug[i];
+    tow[i * Stride] = f1_tow[i] + f2_tow[i];
+    xi[i * Stride] = xi_ns[i];
+    xi_dot[i * Stride] = xi_ns_dot[i];
+  }
+}
+
 void fill_forcing(const CaseModel& m, std::uint64_t seed, std::uint64_t day, DayScratch& s) {
   m.synthesizer->synthesize(seed, day, s.workspace);
   DayForcing& f = s.forcing;
   f.dt_s = m.synthesizer->plan().time_step_s();
-  const auto f1_tug = s.workspace.linear(kF1Tug), f1_tow = s.workspace.linear(kF1Tow);
-  const auto f2_tug = s.workspace.drift(kF2Tug), f2_tow = s.workspace.drift(kF2Tow);
-  const auto xi = s.workspace.linear(kXiNs), xi_dot = s.workspace.linear(kXiNsDot);
-  const std::size_t n = f1_tug.size();
-  f.tug_force_n.resize(n);
-  f.tow_force_n.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    f.tug_force_n[i] = f1_tug[i] + f2_tug[i];
-    f.tow_force_n[i] = f1_tow[i] + f2_tow[i];
-  }
-  f.xi_ns_m.assign(xi.begin(), xi.end());
-  f.xi_ns_dot_m_s.assign(xi_dot.begin(), xi_dot.end());
+  const std::size_t n = s.workspace.linear(kF1Tug).size();
+  for (auto* r : {&f.tug_force_n, &f.tow_force_n, &f.xi_ns_m, &f.xi_ns_dot_m_s}) r->resize(n);
+  write_records<1>(s.workspace, f.tug_force_n.data(), f.tow_force_n.data(), f.xi_ns_m.data(), f.xi_ns_dot_m_s.data());
 }
 
 // A lock-step group's scratch: the synthesizer's buffers and the days'
@@ -442,26 +450,18 @@ struct GroupScratch {
   LockstepForcing<kLockstepDays> forcing;
 };
 
-// Synthesises day `day` into lane l of the group: the records of fill_forcing,
-// interleaved (written right after the synthesis, while they are in cache; a
-// single pass over four synthesised days was no faster and needs four
-// workspaces).
+// Synthesises day `day` into lane l of the group (written right after the
+// synthesis, while the records are in cache; a single pass over four
+// synthesised days was no faster and needs four workspaces).
 void fill_lane(const CaseModel& m, std::uint64_t seed, std::uint64_t day, std::size_t l, GroupScratch& s) {
   constexpr std::size_t K = kLockstepDays;
   m.synthesizer->synthesize(seed, day, s.workspace);
   LockstepForcing<K>& f = s.forcing;
   f.dt_s = m.synthesizer->plan().time_step_s();
-  const auto f1_tug = s.workspace.linear(kF1Tug), f1_tow = s.workspace.linear(kF1Tow);
-  const auto f2_tug = s.workspace.drift(kF2Tug), f2_tow = s.workspace.drift(kF2Tow);
-  const auto xi = s.workspace.linear(kXiNs), xi_dot = s.workspace.linear(kXiNsDot);
-  const std::size_t n = f1_tug.size();
+  const std::size_t n = s.workspace.linear(kF1Tug).size();
   if (f.size() != n) f.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    f.tug_force_n[i * K + l] = f1_tug[i] + f2_tug[i];
-    f.tow_force_n[i * K + l] = f1_tow[i] + f2_tow[i];
-    f.xi_ns_m[i * K + l] = xi[i];
-    f.xi_ns_dot_m_s[i * K + l] = xi_dot[i];
-  }
+  write_records<K>(s.workspace, f.tug_force_n.data() + l, f.tow_force_n.data() + l, f.xi_ns_m.data() + l,
+                   f.xi_ns_dot_m_s.data() + l);
 }
 
 }  // namespace
