@@ -120,14 +120,14 @@
 //     sag/span ~ 0.07; 27% for a 2000 ft wire at 2,500 lbf).
 //   * For catenary-dominated wire lines (static stiffness well below EA/L)
 //     the RMS fit error over the excitation set is 12-42% of the RMS tension;
-//     for nearly straight wire and for fiber it is below 10%. Two causes: the
-//     elastic catenary's force-extension curve over +-6 m is not a cubic (the
-//     best cubic through the quasi-static runs alone misses by 11-19% for
-//     1000 ft at 15,000-51,500 lbf, 34-40% for 2000 ft below 21,000 lbf), and
-//     the tension depends on the extension's frequency, which no
-//     tau(xi, xi_dot) polynomial represents (tests/validation/
-//     towline_calibration_test.cpp prints both). The fitted a10 can even be
-//     negative for very slack wire.
+//     for nearly straight wire and for fiber it is below 10%. Two causes
+//     (tests/validation/towline_calibration_test.cpp prints both): the tension
+//     depends on the extension's frequency, which no tau(xi, xi_dot)
+//     represents (2000 ft wire at 40,000-98,000 lbf: 12-28% with one
+//     polynomial, 3-7% with one per excitation frequency), and slack-prone or
+//     short lines are not a cubic in (xi, xi_dot) over +-6 m even at one
+//     frequency (about 10-22% with one polynomial per frequency). The fitted a10
+//     can even be negative for very slack wire.
 //   * Very slack lines: probe runs that snap and never become periodic make
 //     the point-by-point comparison depend on the input's last digits (T-ATF
 //     166 / YRBM on 800 ft of fiber: 256 elements at 4,635.9 lbf, 512 at

@@ -4,9 +4,12 @@
 // RMS dynamic tension, with the T-ATF wire (Appendix A t-atf.win) or the
 // nylon estimate plus the 90 ft chain pendant (tests/data/towline).
 // Long: about 40 fits. Label "validation".
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -53,33 +56,53 @@ std::vector<CalibrationLine> calibration_lines(bool fiber) {
   return out;
 }
 
-// Diagnostic for the known limitation: the relative RMS error of the best
-// cubic tau = b1 xi + b2 xi^2 + b3 xi^3 through the quasi-static runs alone
-// (omega <= kQuasiStaticOmega, taut samples below the breaking strength). It
-// bounds from below what any tau(xi, xi_dot) polynomial of degree 3 can reach
-// on those runs, whatever it does with xi_dot.
-constexpr double kQuasiStaticOmega_rad_s = 0.08;  // the set's 0.03 and 0.07 rad/s runs: slower than the line's modes
+// Diagnostic for the known limitation, on the taut samples below the breaking
+// strength: the relative RMS error of the fitted polynomial, and that of the
+// best least-squares 9-term polynomial of EQ-TOWLINE-11 fitted to each
+// excitation frequency's runs separately (every frequency its own
+// coefficients). The second removes the frequency dependence: what it leaves
+// is the part of the tension that is not a cubic in (xi, xi_dot) even at one
+// frequency.
+struct TautFitErrors {
+  double shared = 0.0;         // the fit's polynomial
+  double per_frequency = 0.0;  // each frequency its own best polynomial
+};
 
-double quasi_static_cubic_error(const TowlineFit& fit) {
+TautFitErrors taut_fit_errors(const TowlineFit& fit) {
   const FitSummary& s = fit.summary();
-  std::vector<double> xi, tau;
+  std::map<double, std::vector<const TensionSample*>> by_frequency;
   for (const auto& run : fit.runs()) {
-    if (run.omega_rad_s > kQuasiStaticOmega_rad_s) continue;
     for (const auto& q : run.samples) {
       if (q.slack || q.tau_n + s.mean_tension_n > s.breaking_strength_n) continue;
-      xi.push_back(q.xi_m);
-      tau.push_back(q.tau_n);
+      by_frequency[run.omega_rad_s].push_back(&q);
     }
   }
-  if (xi.size() < 3) return 0.0;
-  Eigen::MatrixXd a(xi.size(), 3);
-  Eigen::VectorXd b(xi.size());
-  for (std::size_t i = 0; i < xi.size(); ++i) {
-    a.row(static_cast<Eigen::Index>(i)) << xi[i], xi[i] * xi[i], xi[i] * xi[i] * xi[i];
-    b(static_cast<Eigen::Index>(i)) = tau[i];
+  double sum_t2 = 0.0, shared_e2 = 0.0, own_e2 = 0.0;
+  for (const auto& [omega, group] : by_frequency) {
+    double x_scale = 0.0, v_scale = 0.0;
+    for (const auto* q : group) {
+      x_scale = std::max(x_scale, std::abs(q->xi_m));
+      v_scale = std::max(v_scale, std::abs(q->xi_dot_m_s));
+    }
+    const auto rows = static_cast<Eigen::Index>(group.size());
+    Eigen::MatrixXd a(rows, PolynomialCoefficients::kCount);  // monomials of the scaled xi, xi_dot
+    Eigen::VectorXd b(rows);
+    for (Eigen::Index i = 0; i < rows; ++i) {
+      const TensionSample& q = *group[static_cast<std::size_t>(i)];
+      const double x = q.xi_m / x_scale, v = q.xi_dot_m_s / v_scale;
+      a.row(i) << x, v, x * x, x * v, v * v, x * x * x, x * x * v, x * v * v, v * v * v;
+      b(i) = q.tau_n;
+      const double e = fit.dynamic_tension_n(q.xi_m, q.xi_dot_m_s, AboveBreakingModel::kPolynomial) - q.tau_n;
+      shared_e2 += e * e;
+    }
+    sum_t2 += b.squaredNorm();
+    if (rows >= 2 * PolynomialCoefficients::kCount) {
+      const Eigen::VectorXd c = a.colPivHouseholderQr().solve(b);
+      own_e2 += (a * c - b).squaredNorm();
+    }
   }
-  const Eigen::VectorXd c = a.colPivHouseholderQr().solve(b);
-  return (a * c - b).norm() / b.norm();
+  if (sum_t2 == 0.0) return {};
+  return {std::sqrt(shared_e2 / sum_t2), std::sqrt(own_e2 / sum_t2)};
 }
 
 void check_lines(const std::vector<CalibrationLine>& lines) {
@@ -89,12 +112,14 @@ void check_lines(const std::vector<CalibrationLine>& lines) {
                                        units::lbf_to_n(c.mean_lbf));
     const FitSummary& s = fit->summary();
     const double ratio = s.fit_rms_error_n / s.rms_tension_n;
+    const TautFitErrors taut = taut_fit_errors(*fit);
     std::printf("%-5s %6.0f ft %7.0f lbf: N %3d, steps/period %3d, RMS error %7.2f kips of RMS tau %7.2f kips "
-                "(%.3f), max error %7.2f kips, k_static/k_EA %.2f, best quasi-static cubic %.3f\n",
+                "(%.3f), max error %7.2f kips, k_static/k_EA %.2f; taut samples: %.3f, each frequency its own "
+                "polynomial %.3f\n",
                 c.hawser.c_str(), c.length_ft, c.mean_lbf, s.n_elements, s.steps_per_period,
                 units::n_to_kips(s.fit_rms_error_n), units::n_to_kips(s.rms_tension_n), ratio,
                 units::n_to_kips(s.fit_max_error_n), s.static_stiffness_n_m / s.straight_spring_n_m,
-                quasi_static_cubic_error(*fit));
+                taut.shared, taut.per_frequency);
     EXPECT_LT(ratio, kFitRelTol) << c.hawser << " " << c.length_ft << " ft at " << c.mean_lbf << " lbf";
   }
 }
@@ -105,19 +130,23 @@ TEST(TowlineCalibration, FiberLinesFitWithinTenPercent) { check_lines(calibratio
 // EVIDENCE-OF: EQ-TOWLINE-12
 // KNOWN LIMITATION (disabled; run with --gtest_also_run_disabled_tests): the
 // wire lines pass only when nearly straight (2000 ft at 133,000 lbf, 1000 ft
-// at 125,000 lbf); the others give 12-42 %. Two causes, measured (2026-12-02)
-// with the printed quasi-static diagnostic:
-//  * the elastic catenary's force-extension curve over the extensions the
-//    simulation meets (+-6 m; the thesis's own dynamic tensions on these
-//    lines reach several times the breaking strength) is not a cubic: the best
-//    cubic through the quasi-static runs alone misses by 11-19 % (1000 ft at
-//    15,000-51,500 lbf) and 34-40 % (2000 ft at 7,500-20,500 lbf), so no
-//    9-coefficient polynomial can meet 10 % on these lines;
-//  * a catenary-dominated line's tension also depends on the extension's
-//    frequency (geometric stiffness at slow motion, nearly EA/L plus inertia
-//    and drag at wave frequencies), which tau(xi, xi_dot) cannot represent:
-//    2000 ft at 45,000-98,000 lbf has a 5-10 % static cubic error but 12-24 %
-//    over the whole set.
+// at 125,000 lbf); the others give 12-42 %. The least-squares fit is already
+// the best shared polynomial for the set. Two causes, measured (2026-12-02)
+// with the printed per-frequency diagnostic (taut samples):
+//  * the tension depends on the extension's frequency (a catenary line's
+//    geometric stiffness at slow motion, nearly EA/L plus inertia and drag at
+//    wave frequencies), which one tau(xi, xi_dot) cannot represent: 2000 ft at
+//    40,000-98,000 lbf misses by 12-28 % with one polynomial but only 3-7 %
+//    with a polynomial of its own for each excitation frequency;
+//  * slack-prone and short lines are not a cubic in (xi, xi_dot) even at one
+//    frequency (the extensions the simulation meets, +-6 m, run from slack to
+//    near the breaking strength): 1000 ft at 35,000-51,500 lbf still misses by
+//    9.8-10.5 %, 1000 ft at 10,500-15,000 lbf by 14-15 % and 2000 ft at 2,500-20,500
+//    lbf by 11-22 % with a polynomial per frequency.
+// So no 9-coefficient polynomial of the form the thesis and the issue
+// prescribe can meet 10 % on most of these lines (the thesis's own dynamic tensions
+// on them reach several times the breaking strength, so a narrower set would
+// leave the polynomial extrapolating where the extremes occur).
 TEST(TowlineCalibration, DISABLED_WireLinesFitWithinTenPercent) { check_lines(calibration_lines(false)); }
 
 }  // namespace
