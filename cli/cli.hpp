@@ -23,6 +23,23 @@ struct Context {
 // The vessel catalog of --ships-dir (or the default directory).
 io::ShipCatalog load_catalog(const Context& ctx);
 
+// Strict number parse: the whole text must be a finite number.
+bool parse_number(const std::string& text, double* out);
+
+// Checked before any work, so that a bad path costs nothing and writes
+// nothing; each throws InputError naming the flag:
+//   an output file: not empty, not a directory, in an existing directory;
+void check_output_file(const std::string& flag, const std::string& path);
+//   an output directory: not empty, not an existing file, its parent exists.
+void check_output_dir(const std::string& flag, const std::string& path);
+
+// A CLI11 check for a whole number >= 0 (a uint64 flag would wrap "-1").
+CLI::Validator unsigned_integer();
+
+// The check of every floating-point flag: a finite number (CLI::Range lets
+// "nan" through) in [lo, hi], or (lo, hi] etc. when open.
+CLI::Validator number_in(double lo, double hi, bool lo_open = false, bool hi_open = false);
+
 void add_ships_command(CLI::App& app, Context& ctx);
 void add_build_command(CLI::App& app, Context& ctx);  // build, status, sweep
 // Registers the simulation chain as the case runner of `towdb build`.

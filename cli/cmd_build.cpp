@@ -5,6 +5,7 @@
 //   sweep calibration  writes the Appendix C calibration sweep from its CSV
 #include <atomic>
 #include <csignal>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -157,6 +158,7 @@ sweep::ExpandOptions expand_options() {
 }
 
 int run_build_command(const Context& ctx, const BuildArgs& a) {
+  if (a.json && !a.dry_run) throw InputError("build --json: only with --dry-run (a build reports progress as text)");
   const sweep::SweepFile file = sweep::load_sweep(a.sweep);
   const io::ShipCatalog catalog = load_catalog(ctx);
   const sweep::SweepExpansion exp = sweep::expand_sweep(file, catalog, expand_options());
@@ -254,6 +256,8 @@ int run_status(const std::string& db, bool json) {
 }
 
 int run_calibration(const Context& ctx, const std::string& csv, const std::string& out) {
+  if (!out.empty()) check_output_file("--out", out);
+  if (std::filesystem::is_directory(csv)) throw InputError("--csv " + csv + ": is a directory, expected a CSV file");
   std::ifstream in(csv, std::ios::binary);
   if (!in) throw InputError(csv + ": cannot open the CSV file (missing or unreadable)");
   std::ostringstream text;

@@ -100,6 +100,7 @@ void export_appendix_c(store::Database& db, std::ostream& os) {
 }
 
 int run_export(const ExportArgs& a) {
+  if (!a.output.empty()) check_output_file("--output", a.output);
   store::Database db = store::Database::open(a.db, store::Database::Mode::kReadOnly);
   std::ofstream file;
   if (!a.output.empty()) {

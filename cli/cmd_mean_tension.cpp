@@ -118,18 +118,18 @@ void add_mean_tension_command(CLI::App& app, Context& ctx) {
   auto a = std::make_shared<MeanTensionArgs>();
   CLI::App* c = app.add_subcommand("mean-tension", "Mean (steady) towline tension of a tow and its components");
   c->add_option("--tow", a->tow, "Tow vessel (name or alias)")->required();
-  c->add_option("--speed-kt", a->speed_kt, "Tow speed [kt]")->required()->check(CLI::Range(0.1, 30.0));
-  c->add_option("--wind-kt", a->wind_kt, "True wind speed [kt]")->required()->check(CLI::Range(0.0, 100.0));
+  c->add_option("--speed-kt", a->speed_kt, "Tow speed [kt]")->required()->check(number_in(0.1, 30.0));
+  c->add_option("--wind-kt", a->wind_kt, "True wind speed [kt]")->required()->check(number_in(0.0, 100.0));
   c->add_option("--heading-deg", a->heading_deg, "Wind and sea heading [deg], 0 = following, 180 = head")
       ->required()
-      ->check(CLI::Range(0.0, 360.0));
+      ->check(number_in(0.0, 360.0));
   c->add_option("--margin", a->margin, "Hull margin: 0.1 thesis (default), 0.25 Towing Manual")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(number_in(0.0, 1.0));
   c->add_option("--propeller", a->propeller, "Tow propeller: locked (default), free, removed")
       ->check(CLI::IsMember({"locked", "free", "removed"}));
   c->add_option("--sea-head-lbf", a->sea_head_lbf,
                 "Head-seas added resistance [lbf] (Towing Manual curve), corrected for heading; default 0")
-      ->check(CLI::Range(0.0, 1.0e6));
+      ->check(number_in(0.0, 1.0e6));
   c->add_option("--sea-resistance", a->sea_resistance,
                 "Sea-state added resistance: given (--sea-head-lbf, default), strip-theory (at --heading-deg) or "
                 "strip-theory-head (head seas, as the bundled sweep)")

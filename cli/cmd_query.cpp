@@ -7,7 +7,7 @@
 //   towdb query --db F --batch [--json]     CSV queries on stdin, header = flag names
 //   towdb query --db F --leave-one-out      interpolation error of the database
 //   towdb max-speed / min-length            the same flags without --speed-kt / --length-ft
-#include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -34,28 +34,6 @@ using towdb::query::QueryRequest;
 using towdb::query::QueryResult;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Strict number parse: the whole text must be a finite number.
-bool parse_number(const std::string& text, double* out) {
-  const char* b = text.data();
-  const char* e = b + text.size();
-  const auto r = std::from_chars(b, e, *out);
-  return r.ec == std::errc() && r.ptr == e && std::isfinite(*out);
-}
-
-// A CLI11 check: a finite number in [lo, hi] (or (lo, hi] etc. when open).
-CLI::Validator number_in(double lo, double hi, bool lo_open, bool hi_open) {
-  const std::string desc = std::string(lo_open ? "(" : "[") + format_value(lo) + ", " + format_value(hi) +
-                           (hi_open ? ")" : "]");
-  return CLI::Validator(
-      [=](std::string& s) -> std::string {
-        double v = 0;
-        if (!parse_number(s, &v)) return "'" + s + "' is not a finite number";
-        const bool ok = (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
-        return ok ? std::string() : "value " + s + " not in " + desc;
-      },
-      "NUMBER in " + desc, "number_in");
-}
 
 const double kInf = std::numeric_limits<double>::infinity();
 
@@ -325,6 +303,9 @@ int run_batch(query::Database& db, const QueryArgs& defaults) {
       std::string known;
       for (const auto& k : kColumns) known += (known.empty() ? "" : ",") + k;
       throw InputError("stdin line " + std::to_string(line_no) + ": unknown column '" + h + "'; known: " + known);
+    }
+    if (std::count(header.begin(), header.end(), h) > 1) {
+      throw InputError("stdin line " + std::to_string(line_no) + ": column '" + h + "' appears more than once");
     }
   }
   ordered_json all = ordered_json::array();

@@ -230,15 +230,15 @@ void add_ships_command(CLI::App& app, Context& ctx) {
   auto st = std::make_shared<StationsArgs>();
   CLI::App* stations = ships->add_subcommand(
       "stations", "Generate a [hull.stations] table (Lewis sections) from principal particulars");
-  stations->add_option("--length-pp-ft", st->length_pp_ft, "Length between perpendiculars [ft]")->required()->check(CLI::Range(10.0, 1500.0));
-  stations->add_option("--beam-ft", st->beam_ft, "Waterline beam [ft]")->required()->check(CLI::Range(5.0, 200.0));
-  stations->add_option("--draft-ft", st->draft_ft, "Hull draft [ft]")->required()->check(CLI::Range(0.5, 60.0));
-  stations->add_option("--block-coefficient", st->block_coefficient, "C_b [-]")->required()->check(CLI::Range(0.3, 1.0));
-  stations->add_option("--midship-coefficient", st->midship_coefficient, "C_m [-]")->required()->check(CLI::Range(0.3, 1.0));
-  stations->add_option("--lcb-ft", st->lcb_ft, "LCB from midships, + forward [ft]")->required()->check(CLI::Range(-400.0, 400.0));
+  stations->add_option("--length-pp-ft", st->length_pp_ft, "Length between perpendiculars [ft]")->required()->check(number_in(10.0, 1500.0));
+  stations->add_option("--beam-ft", st->beam_ft, "Waterline beam [ft]")->required()->check(number_in(5.0, 200.0));
+  stations->add_option("--draft-ft", st->draft_ft, "Hull draft [ft]")->required()->check(number_in(0.5, 60.0));
+  stations->add_option("--block-coefficient", st->block_coefficient, "C_b [-]")->required()->check(number_in(0.3, 1.0));
+  stations->add_option("--midship-coefficient", st->midship_coefficient, "C_m [-]")->required()->check(number_in(0.3, 1.0));
+  stations->add_option("--lcb-ft", st->lcb_ft, "LCB from midships, + forward [ft]")->required()->check(number_in(-400.0, 400.0));
   stations->add_option("--waterplane-coefficient", st->waterplane_coefficient,
                        "C_wp [-]; 0 or omitted: estimated from C_b")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(number_in(0.0, 1.0));
   stations->add_option("--stations", st->stations, "Number of stations (default 21)")->check(CLI::Range(5, 1001));
   stations->callback([&ctx, st] { ctx.action = [st] { return run_stations(*st); }; });
 }

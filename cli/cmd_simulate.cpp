@@ -31,6 +31,7 @@ struct SimulateArgs {
   double wind_kt = 0.0, hs_ft = 0.0, tp_s = 0.0, gamma = 3.3;
   std::string spectrum;  // "" = PM by wind, else bretschneider | jonswap
   double swell_hs_ft = 0.0, swell_tp_s = 0.0, swell_heading_deg = 0.0;
+  bool gamma_given = false, swell_heading_given = false;  // flags whose default is a valid value
   int days = 500;
   std::uint64_t seed = 1;
   int threads = 0;
@@ -40,10 +41,25 @@ struct SimulateArgs {
   std::string tow_propeller = "removed";
 };
 
+// The sea of the flags; a flag the chosen sea would ignore is an error.
 sea::SeaState sea_state(const SimulateArgs& a) {
   const double mu = units::deg_to_rad(a.heading_deg);
   sea::Spectrum wind_sea = sea::Spectrum::pierson_moskowitz(1.0);
-  if (a.hs_ft > 0.0 || a.tp_s > 0.0) {
+  const bool two_parameter = a.hs_ft > 0.0 || a.tp_s > 0.0;  // 0 = not given (their ranges exclude 0)
+  if (two_parameter && a.wind_kt > 0.0) {
+    throw InputError("--wind-kt " + format_value(a.wind_kt) +
+                     " with --hs-ft/--tp-s: give one sea, a wind speed (Pierson-Moskowitz) or Hs and Tp");
+  }
+  if (!two_parameter && !a.spectrum.empty()) {
+    throw InputError("--spectrum " + a.spectrum + ": needs --hs-ft and --tp-s (with --wind-kt the sea is Pierson-Moskowitz)");
+  }
+  if (a.gamma_given && a.spectrum != "jonswap" && !(a.swell_hs_ft > 0.0)) {
+    throw InputError("--gamma " + format_value(a.gamma) + ": only a JONSWAP sea (--spectrum jonswap) or a swell uses it");
+  }
+  if (!(a.swell_hs_ft > 0.0) && (a.swell_tp_s > 0.0 || a.swell_heading_given)) {
+    throw InputError("--swell-tp-s / --swell-heading-deg: need --swell-hs-ft (the swell's height)");
+  }
+  if (two_parameter) {
     if (!(a.hs_ft > 0.0 && a.tp_s > 0.0)) throw InputError("--hs-ft and --tp-s must be given together");
     if (a.spectrum == "jonswap") {
       wind_sea = sea::Spectrum::jonswap(units::ft_to_m(a.hs_ft), a.tp_s, a.gamma);
@@ -84,6 +100,7 @@ class ProgressBar {
 double kips(double n) { return units::n_to_kips(n); }
 
 int run_simulate(const Context& ctx, const SimulateArgs& a) {
+  if (!a.plot.empty()) check_output_file("--plot", a.plot);
   const io::ShipCatalog cat = load_catalog(ctx);
   const model::Vessel& tug = cat.vessel(a.tug).vessel;
   const model::Vessel& tow = cat.vessel(a.tow).vessel;
@@ -230,27 +247,27 @@ void add_simulate_command(CLI::App& app, Context& ctx) {
   CLI::App* c = app.add_subcommand("simulate", "Simulate one towing case and fit the daily maxima");
   c->add_option("--tug", a->tug, "Tug name (T-ATF, ARS50)")->required();
   c->add_option("--tow", a->tow, "Tow name (LHA1, AE26, CG47, FFG7, YRBM)")->required();
-  c->add_option("--speed-kt", a->speed_kt, "Tow speed [kt]")->required()->check(CLI::Range(0.5, 20.0));
+  c->add_option("--speed-kt", a->speed_kt, "Tow speed [kt]")->required()->check(number_in(0.5, 20.0));
   c->add_option("--heading-deg", a->heading_deg, "Wave heading [deg], 0 = following seas, 180 = head seas")
-      ->required()->check(CLI::Range(0.0, 360.0));
+      ->required()->check(number_in(0.0, 360.0));
   c->add_option("--line", a->line, "Hawser: wire or fiber")->required()->check(CLI::IsMember({"wire", "fiber"}));
   c->add_option("--length-ft", a->length_ft, "Hawser length [ft] (the pendant is added)")
-      ->required()->check(CLI::Range(100.0, 10000.0));
+      ->required()->check(number_in(100.0, 10000.0));
   c->add_option("--mean-tension-lbf", a->mean_tension_lbf, "Mean (horizontal) towline tension [lbf]")
-      ->required()->check(CLI::Range(100.0, 2.0e6));
+      ->required()->check(number_in(100.0, 2.0e6));
   c->add_option("--wind-kt", a->wind_kt, "Wind speed [kt]: fully developed Pierson-Moskowitz sea")
-      ->check(CLI::Range(1.0, 80.0));
+      ->check(number_in(1.0, 80.0));
   c->add_option("--hs-ft", a->hs_ft, "Significant wave height [ft] (two-parameter sea, with --tp-s)")
-      ->check(CLI::Range(0.1, 80.0));
-  c->add_option("--tp-s", a->tp_s, "Peak period [s]")->check(CLI::Range(2.0, 30.0));
+      ->check(number_in(0.1, 80.0));
+  c->add_option("--tp-s", a->tp_s, "Peak period [s]")->check(number_in(2.0, 30.0));
   c->add_option("--spectrum", a->spectrum, "With --hs-ft: bretschneider (default) or jonswap")
       ->check(CLI::IsMember({"bretschneider", "jonswap"}));
-  c->add_option("--gamma", a->gamma, "JONSWAP peak enhancement (default 3.3)")->check(CLI::Range(1.0, 10.0));
-  c->add_option("--swell-hs-ft", a->swell_hs_ft, "Swell significant height [ft]")->check(CLI::Range(0.1, 60.0));
-  c->add_option("--swell-tp-s", a->swell_tp_s, "Swell peak period [s]")->check(CLI::Range(4.0, 30.0));
-  c->add_option("--swell-heading-deg", a->swell_heading_deg, "Swell heading [deg]")->check(CLI::Range(0.0, 360.0));
+  c->add_option("--gamma", a->gamma, "JONSWAP peak enhancement (default 3.3)")->check(number_in(1.0, 10.0));
+  c->add_option("--swell-hs-ft", a->swell_hs_ft, "Swell significant height [ft]")->check(number_in(0.1, 60.0));
+  c->add_option("--swell-tp-s", a->swell_tp_s, "Swell peak period [s]")->check(number_in(4.0, 30.0));
+  c->add_option("--swell-heading-deg", a->swell_heading_deg, "Swell heading [deg]")->check(number_in(0.0, 360.0));
   c->add_option("--days", a->days, "Simulated days (default 500)")->check(CLI::Range(3, 1000000));
-  c->add_option("--seed", a->seed, "Random seed (default 1)");
+  c->add_option("--seed", a->seed, "Random seed (default 1)")->check(unsigned_integer());
   c->add_option("--threads", a->threads, "Threads (default: all cores)")->check(CLI::Range(0, 1024));
   c->add_option("--above-breaking", a->above_breaking,
                 "Towline above breaking strength: polynomial (thesis) or spring (EA/L)")
@@ -259,7 +276,11 @@ void add_simulate_command(CLI::App& app, Context& ctx) {
       ->check(CLI::IsMember({"removed", "locked", "free"}));
   c->add_flag("--json", a->json, "JSON output");
   c->add_option("--plot", a->plot, "Write a PNG: daily maxima vs the fitted Type I, and the worst day's tension");
-  c->callback([&ctx, a] { ctx.action = [&ctx, a] { return run_simulate(ctx, *a); }; });
+  c->callback([&ctx, a, c] {
+    a->gamma_given = c->count("--gamma") > 0;
+    a->swell_heading_given = c->count("--swell-heading-deg") > 0;
+    ctx.action = [&ctx, a] { return run_simulate(ctx, *a); };
+  });
 }
 
 }  // namespace towdb::cli

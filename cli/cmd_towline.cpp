@@ -218,11 +218,11 @@ void add_towline_command(CLI::App& app, Context& ctx) {
   c->add_option("--line", a->line, "Hawser: wire or fiber")->required()->check(CLI::IsMember({"wire", "fiber"}));
   c->add_option("--length-ft", a->length_ft, "Hawser length [ft] (the pendant is added)")
       ->required()
-      ->check(CLI::Range(100.0, 10000.0));
+      ->check(number_in(100.0, 10000.0));
   c->add_option("--mean-tension-lbf", a->mean_tension_lbf,
                 "Mean (horizontal) towline tension [lbf], below the breaking strength")
       ->required()
-      ->check(CLI::Range(100.0, 2.0e6));
+      ->check(number_in(100.0, 2.0e6));
   c->add_option("--threads", a->threads, "Threads for the 56 dynamics runs (default: all cores)")
       ->check(CLI::Range(0, 1024));
   c->add_flag("--json", a->json, "JSON output");

@@ -52,6 +52,7 @@ struct ValidateArgs {
 };
 
 std::string read_text(const fs::path& path) {
+  if (fs::is_directory(path)) throw InputError("'" + path.string() + "': is a directory, expected a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read '" + path.string() + "'");
   std::ostringstream os;
@@ -166,6 +167,7 @@ void write_scatter_plot(const fs::path& png, const std::vector<validation::CaseO
 }
 
 int run_validate(const Context& ctx, const ValidateArgs& a) {
+  check_output_dir("--out", a.out_dir);
   const io::ShipCatalog catalog = load_catalog(ctx);
   std::vector<sweep::CalibrationRow> rows =
       sweep::parse_calibration_csv(read_text(a.cases_path), a.cases_path, catalog);
@@ -327,7 +329,7 @@ void add_validate_command(CLI::App& app, Context& ctx) {
   c->add_option("--threads", a->threads, "Cases run in parallel (default 1; 0 = all cores)")
       ->check(CLI::Range(0, 1024));
   c->add_option("--days-scale", a->days_scale, "Simulated days = this x the thesis's days (default 1)")
-      ->check(CLI::Range(1e-4, 10.0));
+      ->check(number_in(1e-4, 10.0));
   c->add_option("--min-days", a->min_days, "At least this many simulated days per case (default 20; >= 10)")
       ->check(CLI::Range(10, 1000000));
   c->add_option("--max-cases", a->max_cases, "Run only the first N selected cases")->check(CLI::Range(1, 1000000));

@@ -44,6 +44,7 @@ struct VesselArgs {
   double wind_kt = 20.0;
   double mean_tension_lbf = 0.0;  // tugs only; 0 = not given
   std::string tow_propeller = "removed";
+  bool tow_propeller_given = false;
   // Frequency grid: the AddedResistanceOptions defaults (the integrals of
   // EQ-AR-2 and EQ-AR-3 run over the same grid as the printed operator).
   double omega_min_rad_s = seakeeping::AddedResistanceOptions{}.omega_min_rad_s;
@@ -129,12 +130,17 @@ void write_vessel_plot(const std::string& png_path, const std::string& title, co
 }
 
 int run_vessel(const Context& ctx, const VesselArgs& a) {
+  if (!a.plot.empty()) check_output_file("--plot", a.plot);
   const io::ShipCatalog cat = load_catalog(ctx);
   const model::Vessel& v = cat.vessel(a.name).vessel;
   const bool is_tug = v.role == model::VesselRole::kTug;
   if (is_tug && !(a.mean_tension_lbf > 0.0)) {
     throw InputError("--mean-tension-lbf is required for the tug '" + v.name +
                      "': its propeller damping depends on the thrust it gives (tug resistance + mean tension)");
+  }
+  if (is_tug && a.tow_propeller_given) {
+    throw InputError("--tow-propeller " + a.tow_propeller + ": only for a tow; '" + v.name +
+                     "' is a tug (its propeller damping follows from --mean-tension-lbf)");
   }
   if (!is_tug && a.mean_tension_lbf > 0.0) {
     throw InputError("--mean-tension-lbf: value = " + fmt(a.mean_tension_lbf) + ": only for a tug; '" + v.name +
@@ -291,22 +297,22 @@ void add_vessel_command(CLI::App& app, Context& ctx) {
   CLI::App* c = app.add_subcommand(
       "vessel", "Seakeeping of one vessel: RAOs, exciting forces, added resistance, surge damping");
   c->add_option("name", a->name, "Vessel name or alias (T-ATF, ARS50, LHA1, AE26, CG47, FFG7, YRBM)")->required();
-  c->add_option("--speed-kt", a->speed_kt, "Speed through the water [kt]")->required()->check(CLI::Range(0.0, 20.0));
+  c->add_option("--speed-kt", a->speed_kt, "Speed through the water [kt]")->required()->check(number_in(0.0, 20.0));
   c->add_option("--heading-deg", a->heading_deg, "Wave heading [deg], 0 = following seas, 180 = head seas")
       ->required()
-      ->check(CLI::Range(0.0, 360.0));
+      ->check(number_in(0.0, 360.0));
   c->add_option("--wind-kt", a->wind_kt,
                 "Wind speed [kt] of the Pierson-Moskowitz sea for the wave-induced damping (default 20)")
-      ->check(CLI::Range(1.0, 80.0));
+      ->check(number_in(1.0, 80.0));
   c->add_option("--mean-tension-lbf", a->mean_tension_lbf,
                 "Tugs only, required: mean towline tension [lbf] the propellers must give")
-      ->check(CLI::Range(100.0, 2.0e6));
+      ->check(number_in(100.0, 2.0e6));
   c->add_option("--tow-propeller", a->tow_propeller, "Tows only: removed (thesis, default), locked or free")
       ->check(CLI::IsMember({"removed", "locked", "free"}));
   c->add_option("--omega-min-rad-s", a->omega_min_rad_s, "Lowest wave frequency [rad/s] (default 0.2)")
-      ->check(CLI::Range(0.01, 10.0));
+      ->check(number_in(0.01, 10.0));
   c->add_option("--omega-max-rad-s", a->omega_max_rad_s, "Highest wave frequency [rad/s] (default 2.5)")
-      ->check(CLI::Range(0.02, 10.0));
+      ->check(number_in(0.02, 10.0));
   c->add_option("--omega-count", a->omega_count, "Number of frequencies, uniform grid (default 48)")
       ->check(CLI::Range(3, 2000));
   c->add_option("--threads", a->threads, "Threads over the frequencies (default: all cores)")
@@ -315,7 +321,10 @@ void add_vessel_command(CLI::App& app, Context& ctx) {
   CLI::Option* csv = c->add_flag("--csv", a->csv, "CSV output: one row per wave frequency");
   json->excludes(csv);
   c->add_option("--plot", a->plot, "Write a PNG: heave and pitch RAOs and the added resistance operator vs omega");
-  c->callback([&ctx, a] { ctx.action = [&ctx, a] { return run_vessel(ctx, *a); }; });
+  c->callback([&ctx, a, c] {
+    a->tow_propeller_given = c->count("--tow-propeller") > 0;
+    ctx.action = [&ctx, a] { return run_vessel(ctx, *a); };
+  });
 }
 
 }  // namespace towdb::cli

@@ -35,6 +35,17 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // An unknown command word: name it and list the commands (CLI11 would only
+    // say that a subcommand is required).
+    const auto remaining = app.remaining();
+    if (app.get_subcommands().empty() && !remaining.empty() && !remaining.front().empty() &&
+        remaining.front().front() != '-') {
+      std::string names;
+      for (const CLI::App* sub : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + sub->get_name();
+      std::cerr << "towdb: error: unknown command '" << remaining.front() << "'; the commands are: " << names
+                << "\nRun 'towdb --help' for usage.\n";
+      return 2;
+    }
     std::cerr << "towdb: error: " << e.what() << "\nRun 'towdb --help' for usage.\n";
     return 2;
   } catch (const towdb::InputError& e) {

@@ -1,16 +1,17 @@
 # Per-target compiler settings and the one test-registration helper.
 
-# towdb_target_warnings(<target>): warnings on the target, never global flags.
-function(towdb_target_warnings target)
+# towdb_target_options(<target>): warnings, and the one code-generation flag
+# the results depend on, on the target; never global flags.
+function(towdb_target_options target)
   if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
     target_compile_options(${target} PRIVATE
       $<$<COMPILE_LANGUAGE:CXX>:-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion
-                                -Wnon-virtual-dtor -Wold-style-cast -Wunused
-                                # The surge integrator's 4-double vector lanes (simulation/surge.hpp)
-                                # on a baseline x86-64 build: GCC notes that their by-value ABI
-                                # differs under AVX. They never cross a library boundary.
-                                -Wno-psabi>
-      $<$<COMPILE_LANGUAGE:C>:-Wall -Wextra -Wpedantic>)
+                                -Wnon-virtual-dtor -Wold-style-cast -Wunused>
+      $<$<COMPILE_LANGUAGE:C>:-Wall -Wextra -Wpedantic>
+      # No fused multiply-add contraction, even when CMAKE_CXX_FLAGS enable FMA
+      # (-march=native): results stay bit-identical to the bundled database,
+      # and the surge integrator's vector lanes to its scalar path.
+      -ffp-contract=off)
     if(TOWDB_WERROR)
       target_compile_options(${target} PRIVATE -Werror)
       if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
@@ -43,7 +44,7 @@ function(towdb_add_module name)
   if(ARG_LIBS)
     target_link_libraries(towdb_${name} PUBLIC ${ARG_LIBS})
   endif()
-  towdb_target_warnings(towdb_${name})
+  towdb_target_options(towdb_${name})
   set_property(GLOBAL APPEND PROPERTY TOWDB_MODULES towdb_${name})
 endfunction()
 
@@ -55,7 +56,7 @@ function(towdb_add_test name)
   cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE towdb_test_support ${ARG_LIBS} GTest::gtest GTest::gmock GTest::gtest_main)
-  towdb_target_warnings(${name})
+  towdb_target_options(${name})
   if(NOT ARG_LABELS)
     set(ARG_LABELS unit)
   endif()

@@ -133,6 +133,12 @@ VesselFile parse_vessel(std::string_view text, const std::string& path) {
       throw InputError(drag.where("speed_kt") + ": speed_kt and total_resistance_coefficient must have the "
                        "same length (" + std::to_string(speed.size()) + ", " + std::to_string(ct.size()) + ")");
     }
+    for (std::size_t i = 1; i < speed.size(); ++i) {
+      if (!(speed[i] > speed[i - 1])) {
+        throw InputError(drag.where("speed_kt") + ": speed_kt[" + std::to_string(i) + "] = " + format_value(speed[i]) +
+                         ": the speeds must increase (previous " + format_value(speed[i - 1]) + ")");
+      }
+    }
     for (double s : speed) v.drag.speed_m_s.push_back(kt_to_m_s(s));
     v.drag.total_resistance_coefficient = ct;
     drag.finish();
@@ -140,7 +146,13 @@ VesselFile parse_vessel(std::string_view text, const std::string& path) {
 
   {
     StrictTable tp = top.table("tow_point");
-    v.tow_point.x_m = ft_to_m(tp.sourced_number("x_ft", -800.0, 800.0));
+    const double x_ft = tp.sourced_number("x_ft", -800.0, 800.0);
+    if (v.role == model::VesselRole::kTug ? !(x_ft < 0.0) : !(x_ft > 0.0)) {
+      throw InputError(tp.where("x_ft") + ": x_ft = " + format_value(x_ft) +
+                       (v.role == model::VesselRole::kTug ? ": a tug's tow point is aft of midships (< 0)"
+                                                          : ": a tow's towing fitting is forward of midships (> 0)"));
+    }
+    v.tow_point.x_m = ft_to_m(x_ft);
     v.tow_point.z_m = ft_to_m(tp.sourced_number("z_ft", -20.0, 150.0));
     tp.finish();
   }
@@ -267,7 +279,8 @@ std::filesystem::path default_ships_dir() {
 
 ShipCatalog ShipCatalog::load(const std::filesystem::path& ships_dir) {
   if (!std::filesystem::is_directory(ships_dir)) {
-    throw InputError("ships directory '" + ships_dir.string() + "' does not exist");
+    throw InputError("ships directory '" + ships_dir.string() + "' " +
+                     (std::filesystem::exists(ships_dir) ? "is not a directory" : "does not exist"));
   }
   ShipCatalog cat;
   cat.directory_ = ships_dir;

@@ -176,7 +176,7 @@ std::int64_t StrictTable::integer(std::string_view key, std::int64_t lo, std::in
   if (!node.is_integer()) fail(key, "is " + type_name(node) + ", expected a whole number");
   const std::int64_t v = node.value<std::int64_t>().value();
   if (v < lo || v > hi) {
-    fail(key, "= " + std::to_string(v) + ": must be between " + std::to_string(lo) + " and " +
+    fail(key, "value = " + std::to_string(v) + ": must be between " + std::to_string(lo) + " and " +
                   std::to_string(hi));
   }
   return v;

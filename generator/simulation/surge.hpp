@@ -29,8 +29,8 @@
 // substeps, one RK4 step advances all K days with vector operations; otherwise
 // each day takes its own substeps with the scalar code. Every lane performs
 // the IEEE operations of the scalar code in the same order (no fused
-// multiply-add: the build targets baseline x86-64, where none exists), so a
-// day's results are bit-identical whichever path or group it ran in. Tension
+// multiply-add: every target is built with -ffp-contract=off,
+// cmake/TowdbHelpers.cmake), so a day's results are bit-identical whichever path or group it ran in. Tension
 // laws are therefore written once, as templates on the number type (double or
 // lanes::Lanes<K>), with the lanes:: helpers for max, min, clamp and select.
 //

@@ -48,6 +48,9 @@ Database Database::open(const std::filesystem::path& path, Mode mode) {
   if (mode != Mode::kCreate && !std::filesystem::exists(path)) {
     throw InputError(path.string() + ": database does not exist");
   }
+  if (std::filesystem::is_directory(path)) {
+    throw InputError(path.string() + ": is a directory, expected a towdb database file");
+  }
   int flags = SQLITE_OPEN_FULLMUTEX;
   if (mode == Mode::kReadOnly) flags |= SQLITE_OPEN_READONLY;
   if (mode == Mode::kReadWrite) flags |= SQLITE_OPEN_READWRITE;
@@ -85,6 +88,9 @@ Database Database::open(const std::filesystem::path& path, Mode mode) {
                      "); use a newer towdb");
   }
   if (mode == Mode::kReadOnly) {
+    if (page_count == 0) {
+      throw InputError(path.string() + ": the file is empty, not a towdb database (build one with towdb build)");
+    }
     if (version < latest_schema_version()) {
       throw InputError(path.string() + ": database schema version " + std::to_string(version) +
                        " is older than " + std::to_string(latest_schema_version()) +

@@ -33,6 +33,15 @@ double parse_number(const std::string& text, const std::string& where, const cha
   return v;
 }
 
+// A row's value inside the range a sweep file accepts for it (sweep_file.cpp).
+double in_range(double v, double lo, double hi, const std::string& where, const char* column) {
+  if (!(v >= lo && v <= hi)) {
+    throw InputError(where + ": " + column + " = " + canonical_number(v) + ": must be in [" + canonical_number(lo) +
+                     ", " + canonical_number(hi) + "]");
+  }
+  return v;
+}
+
 int parse_int(const std::string& text, const std::string& where, const char* column) {
   const double v = parse_number(text, where, column);
   if (v != std::floor(v) || v < 0 || v > 1e9) {
@@ -79,12 +88,14 @@ std::vector<CalibrationRow> parse_calibration_csv(std::string_view text, const s
     const io::VesselFile* tow = catalog.find_vessel(f[2]);
     if (!tug) throw InputError(where + ": tug '" + f[1] + "' is not a known vessel");
     if (!tow) throw InputError(where + ": tow '" + f[2] + "' is not a known vessel");
+    if (tug->vessel.role != model::VesselRole::kTug) throw InputError(where + ": tug '" + f[1] + "' is not a tug");
+    if (tow->vessel.role != model::VesselRole::kTow) throw InputError(where + ": tow '" + f[2] + "' is not a tow");
     r.tug = tug->vessel.name;
     r.tow = tow->vessel.name;
-    r.speed_kt = parse_number(f[3], where, "speed_kt");
-    r.wind_kt = parse_number(f[4], where, "wind_kt");
-    r.heading_deg = parse_number(f[5], where, "heading_deg");
-    r.length_ft = parse_number(f[6], where, "length_ft");
+    r.speed_kt = in_range(parse_number(f[3], where, "speed_kt"), 0.1, 30.0, where, "speed_kt");
+    r.wind_kt = in_range(parse_number(f[4], where, "wind_kt"), 1.0, 100.0, where, "wind_kt");
+    r.heading_deg = in_range(parse_number(f[5], where, "heading_deg"), 0.0, 360.0, where, "heading_deg");
+    r.length_ft = in_range(parse_number(f[6], where, "length_ft"), 100.0, 10000.0, where, "length_ft");
     if (f[7] == "w") {
       r.line = "wire";
     } else if (f[7] == "f") {
@@ -92,8 +103,9 @@ std::vector<CalibrationRow> parse_calibration_csv(std::string_view text, const s
     } else {
       throw InputError(where + ": line = '" + f[7] + "': expected w (wire) or f (fiber)");
     }
-    r.mean_tension_lbf = parse_number(f[8], where, "mean_lbf");
+    r.mean_tension_lbf = in_range(parse_number(f[8], where, "mean_lbf"), 1.0, 2.0e6, where, "mean_lbf");
     r.days = parse_int(f[9], where, "days");
+    in_range(r.days, 1.0, 1.0e6, where, "days");
     r.dynamic_999_kips = parse_number(f[10], where, "dyn_kips");
     rows.push_back(r);
   }

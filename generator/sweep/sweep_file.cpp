@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -20,6 +21,7 @@ namespace {
 constexpr double kMinSpeed_kt = 0.1;
 constexpr double kMaxSpeed_kt = 30.0;
 constexpr double kMaxWind_kt = 100.0;
+constexpr double kMinPmWind_kt = 1.0;  // a Pierson-Moskowitz sea from a wind (towdb simulate's lower bound too)
 constexpr double kMinHs_ft = 0.1;
 constexpr double kMaxHs_ft = 100.0;
 constexpr double kMinTp_s = 1.0;
@@ -38,6 +40,7 @@ constexpr std::int64_t kMaxSeed = (std::int64_t{1} << 62);
 const char* kFormat = "towdb-sweep-1";
 
 std::string read_text_file(const std::filesystem::path& path) {
+  if (std::filesystem::is_directory(path)) throw InputError(path.string() + ": is a directory, expected a sweep file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string() + ": cannot open the sweep file (missing or unreadable)");
   std::ostringstream os;
@@ -167,6 +170,11 @@ SeaSpec read_sea(io::StrictTable& t) {
   switch (sea.kind) {
     case SpectrumKind::kPiersonMoskowitz:
       if (!sea.wind_kt) throw InputError(t.where("spectrum") + ": a pierson-moskowitz sea needs wind_kt");
+      if (!(*sea.wind_kt >= kMinPmWind_kt)) {
+        throw InputError(t.where("wind_kt") + ": wind_kt = " + canonical_number(*sea.wind_kt) +
+                         ": a pierson-moskowitz sea needs at least " + canonical_number(kMinPmWind_kt) +
+                         " kt (0 is allowed only beside hs_ft and tp_s)");
+      }
       if (sea.hs_ft || sea.tp_s || sea.gamma) {
         throw InputError(t.where(sea.hs_ft ? "hs_ft" : sea.tp_s ? "tp_s" : "gamma") +
                          ": not allowed in a pierson-moskowitz sea (the wind sets height and period)");
@@ -321,6 +329,9 @@ const model::Vessel& resolve_vessel(const io::ShipCatalog& catalog, const std::s
   if (must_be_tug && vf->vessel.role != model::VesselRole::kTug) {
     throw InputError(where + ": '" + name + "' is not a tug (its ship file says role = tow)");
   }
+  if (!must_be_tug && vf->vessel.role != model::VesselRole::kTow) {
+    throw InputError(where + ": '" + name + "' is not a tow (its ship file says role = tug)");
+  }
   return vf->vessel;
 }
 
@@ -365,6 +376,15 @@ SweepExpansion expand_sweep(const SweepFile& sweep, const io::ShipCatalog& catal
       spec.validate();
     } catch (const InputError& e) {
       throw InputError(where + ": " + e.what());
+    }
+    // The static catenary (and the towline fit) exist only below the breaking strength.
+    const double breaking_n =
+        catalog.towline(catalog.vessel(spec.tug).vessel, spec.line, units::ft_to_m(spec.length_ft)).breaking_strength_n();
+    if (!(spec.mean_tension_n() < breaking_n)) {
+      throw InputError(where + ": mean_tension_lbf = " + format_value(spec.mean_tension_lbf) +
+                       ": must be below the towline's breaking strength, " +
+                       canonical_number(std::round(units::n_to_lbf(breaking_n))) + " lbf (" + spec.tug + ", " +
+                       model::to_string(spec.line) + " " + canonical_number(spec.length_ft) + " ft)");
     }
     const auto [it, inserted] = seen.emplace(spec.condition_key, where);
     if (!inserted) {

@@ -1073,6 +1073,12 @@ SearchResult Engine::search(const Request& request, int axis, bool maximise) con
       res.value = good;
     }
   }
+  if (failures == res.evaluations) {
+    // Not one value could be evaluated: the conditions themselves are outside
+    // the stored data (as query() would say), not "no value passes".
+    throw InputError("no " + name + " in the stored range " + format_value(res.range_low) + " to " +
+                     format_value(res.range_high) + " can be evaluated for these conditions; first: " + first_failure);
+  }
   if (failures > 0) {
     res.warnings.push_back({WarningKind::kIncompleteGrid,
                             std::to_string(failures) + " of " + std::to_string(res.evaluations) + " " + name +

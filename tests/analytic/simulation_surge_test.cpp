@@ -7,6 +7,8 @@
 //   surge-4  integrate_days (lock step) equals integrate_day on each day alone,
 //            bit for bit, also when the days need different substep counts.
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -217,14 +219,19 @@ TEST(SurgeIntegrator, LockStepDaysEqualSingleDaysBitForBit) {  // surge-4
   long substeps_min = std::numeric_limits<long>::max(), substeps_max = 0;
   for (std::size_t l = 0; l < f.size(); ++l) {
     const DayStatistics alone = integrate_day(p, f[l], line, o, &single_trace[l]);
-    EXPECT_EQ(together[l].max_tension_n, alone.max_tension_n) << "day " << l;
-    EXPECT_EQ(together[l].min_tension_n, alone.min_tension_n) << "day " << l;
-    EXPECT_EQ(together[l].slack_time_s, alone.slack_time_s) << "day " << l;
+    const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };  // also tells -0 from +0
+    EXPECT_EQ(bits(together[l].max_tension_n), bits(alone.max_tension_n)) << "day " << l;
+    EXPECT_EQ(bits(together[l].min_tension_n), bits(alone.min_tension_n)) << "day " << l;
+    EXPECT_EQ(bits(together[l].slack_time_s), bits(alone.slack_time_s)) << "day " << l;
     EXPECT_EQ(together[l].snatch_events, alone.snatch_events) << "day " << l;
     EXPECT_EQ(together[l].substeps, alone.substeps) << "day " << l;
-    EXPECT_EQ(together[l].tension_sum_n, alone.tension_sum_n) << "day " << l;
-    EXPECT_EQ(together[l].tension_sum_sq_n2, alone.tension_sum_sq_n2) << "day " << l;
-    EXPECT_EQ(lockstep_trace[l], single_trace[l]) << "day " << l;
+    EXPECT_EQ(together[l].samples, alone.samples) << "day " << l;
+    EXPECT_EQ(bits(together[l].tension_sum_n), bits(alone.tension_sum_n)) << "day " << l;
+    EXPECT_EQ(bits(together[l].tension_sum_sq_n2), bits(alone.tension_sum_sq_n2)) << "day " << l;
+    ASSERT_EQ(lockstep_trace[l].size(), single_trace[l].size());
+    for (std::size_t i = 0; i < single_trace[l].size(); ++i) {
+      ASSERT_EQ(bits(lockstep_trace[l][i]), bits(single_trace[l][i])) << "day " << l << " sample " << i;
+    }
     substeps_min = std::min(substeps_min, alone.substeps);
     substeps_max = std::max(substeps_max, alone.substeps);
   }

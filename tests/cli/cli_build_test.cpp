@@ -12,6 +12,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -159,6 +162,36 @@ TEST(CliBuild, BadSweepFileIsNamed) {  // cli-build-3
   const CommandResult missing = run_towdb("build --sweep /nonexistent.toml --dry-run");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("/nonexistent.toml: cannot open the sweep file"), std::string::npos) << missing.err;
+  const CommandResult directory = run_towdb("build --sweep '" + dir.string() + "' --dry-run");
+  EXPECT_EQ(directory.exit_code, 2);
+  EXPECT_NE(directory.err.find("is a directory, expected a sweep file"), std::string::npos) << directory.err;
+  // Values that would only fail when the case is computed are refused up front
+  // (each with the database untouched): a calm Pierson-Moskowitz sea, a tug
+  // named as the tow, a mean tension at the towline's breaking strength.
+  const std::string one_case = "format = \"towdb-sweep-1\"\ndescription = \"one case\"\n[[case]]\nlabel = \"one\"\ntug = \"T-ATF\"\ntow = \"FFG7\"\nspeed_kt = 9.0\n"
+                               "wind_kt = 20.0\nheading_deg = 0.0\nline = \"wire\"\nlength_ft = 2000.0\n"
+                               "mean_tension_lbf = 50000.0\ndays = 3\n";
+  const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> refused = {
+      {{"wind_kt = 20.0", "wind_kt = 0.0"}, "wind_kt = 0: a pierson-moskowitz sea needs at least 1 kt"},
+      {{"tow = \"FFG7\"", "tow = \"ARS50\""}, "'ARS50' is not a tow"},
+      {{"mean_tension_lbf = 50000.0", "mean_tension_lbf = 360000.0"},
+       "mean_tension_lbf = 360000: must be below the towline's breaking strength, 360000 lbf"},
+  };
+  for (const auto& [change, message] : refused) {
+    std::string text_case = one_case;
+    text_case.replace(text_case.find(change.first), change.first.size(), change.second);
+    { std::ofstream(dir / "one.toml") << text_case; }
+    const CommandResult r1 = run_towdb("build --sweep '" + (dir / "one.toml").string() + "' --db '" + db.string() + "'");
+    EXPECT_EQ(r1.exit_code, 2) << change.second;
+    EXPECT_NE(r1.err.find(message), std::string::npos) << r1.err;
+    EXPECT_EQ(read_text(db), before);
+  }
+  { std::ofstream(dir / "one.toml") << one_case; }
+  const CommandResult json_build =
+      run_towdb("build --sweep '" + (dir / "one.toml").string() + "' --db '" + db.string() + "' --json");
+  EXPECT_EQ(json_build.exit_code, 2);
+  EXPECT_NE(json_build.err.find("build --json: only with --dry-run"), std::string::npos) << json_build.err;
+  EXPECT_EQ(read_text(db), before);
   fs::remove_all(dir);
 }
 

@@ -289,6 +289,13 @@ TEST(CliPhysics, VesselTugPropellerDampingAndBadInput) {  // cli-physics-5
   const CommandResult tow_tension = run_towdb("vessel FFG7 --speed-kt 6 --heading-deg 180 --mean-tension-lbf 5000");
   EXPECT_EQ(tow_tension.exit_code, 2);
   EXPECT_NE(tow_tension.err.find("only for a tug"), std::string::npos) << tow_tension.err;
+  const CommandResult tug_propeller =
+      run_towdb("vessel T-ATF --speed-kt 6 --heading-deg 180 --mean-tension-lbf 5000 --tow-propeller free");
+  EXPECT_EQ(tug_propeller.exit_code, 2);
+  EXPECT_NE(tug_propeller.err.find("--tow-propeller free: only for a tow"), std::string::npos) << tug_propeller.err;
+  const CommandResult nan_heading = run_towdb("vessel FFG7 --speed-kt 6 --heading-deg nan");
+  EXPECT_EQ(nan_heading.exit_code, 2);
+  EXPECT_NE(nan_heading.err.find("--heading-deg: 'nan' is not a finite number"), std::string::npos) << nan_heading.err;
   const CommandResult heading = run_towdb("vessel FFG7 --speed-kt 6 --heading-deg 400");
   EXPECT_EQ(heading.exit_code, 2);
   EXPECT_NE(heading.err.find("--heading-deg"), std::string::npos) << heading.err;

@@ -114,6 +114,9 @@ TEST_F(CliQuery, BatchAnswersEveryRow) {  // cli-query-3
   const CommandResult bad_header = run_towdb("query --db '" + db_ + "' --batch", "tug,tow,colour\nx,y,z\n");
   EXPECT_EQ(bad_header.exit_code, 2);
   EXPECT_NE(bad_header.err.find("unknown column 'colour'"), std::string::npos) << bad_header.err;
+  const CommandResult twice = run_towdb("query --db '" + db_ + "' --batch", "tug,speed_kt,speed_kt\nT-ATF,6,7\n");
+  EXPECT_EQ(twice.exit_code, 2);
+  EXPECT_NE(twice.err.find("column 'speed_kt' appears more than once"), std::string::npos) << twice.err;
 }
 
 TEST_F(CliQuery, BadInputExitsTwoWithANamedMessage) {  // cli-query-4
@@ -180,6 +183,13 @@ TEST_F(CliQuery, InverseQueries) {  // cli-query-5
                                        "' --tug T-ATF --tow LHA1 --line wire --wind-kt 30 --heading-deg 60 "
                                        "--mean-tension-lbf 70000 --length-ft 800");
   EXPECT_NE(text.out.find("none passes"), std::string::npos) << text.out;
+  // Conditions outside the stored data are bad input, as for query, not "none passes".
+  const CommandResult outside = run_towdb("max-speed --db '" + db_ +
+                                          "' --tug T-ATF --tow LHA1 --line wire --wind-kt 100 --heading-deg 60 "
+                                          "--mean-tension-lbf 70000 --length-ft 1800");
+  EXPECT_EQ(outside.exit_code, 2) << outside.out;
+  EXPECT_NE(outside.err.find("no speed_kt in the stored range"), std::string::npos) << outside.err;
+  EXPECT_NE(outside.err.find("wind_kt = 100 is outside the stored range"), std::string::npos) << outside.err;
 }
 
 // Canonical vessel names for the thesis labels of Appendix C.

@@ -62,6 +62,19 @@ TEST(CliShips, BadInputExitsTwoWithANamedMessage) {  // cli-ships-3
   const CommandResult missing_dir = run_towdb("--ships-dir /nonexistent ships list");
   EXPECT_EQ(missing_dir.exit_code, 2);
   EXPECT_NE(missing_dir.err.find("ships directory '/nonexistent' does not exist"), std::string::npos);
+
+  const std::string readme = (source_dir() / "README.md").string();
+  const CommandResult file_dir = run_towdb("--ships-dir '" + readme + "' ships list");
+  EXPECT_EQ(file_dir.exit_code, 2);
+  EXPECT_NE(file_dir.err.find("is not a directory"), std::string::npos) << file_dir.err;
+
+  const CommandResult word = run_towdb("colour");
+  EXPECT_EQ(word.exit_code, 2);
+  EXPECT_NE(word.err.find("unknown command 'colour'; the commands are: ships, build"), std::string::npos) << word.err;
+
+  const CommandResult db_dir = run_towdb("status --db '" + source_dir().string() + "'");
+  EXPECT_EQ(db_dir.exit_code, 2);
+  EXPECT_NE(db_dir.err.find("is a directory, expected a towdb database file"), std::string::npos) << db_dir.err;
 }
 
 TEST(CliShips, BadShipFileNamesFileLineAndKey) {  // cli-ships-4

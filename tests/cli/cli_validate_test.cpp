@@ -10,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -19,12 +21,12 @@ namespace towdb::test {
 namespace {
 
 // Thesis Appendix C run 206 (T-ATF / FFG 7, 9 kt, 20 kt wind, head seas,
-// 800 ft fiber, 79,000 lbf: 98.5 kips), and the same row with a frigate named
-// as the tug (parses, but the case cannot run).
+// 800 ft fiber, 79,000 lbf: 98.5 kips), and the same row with a mean tension
+// above the hawser's breaking strength (parses, but the case cannot run).
 constexpr const char* kTable =
     "case,tug,tow,speed_kt,wind_kt,heading_deg,length_ft,line,mean_lbf,days,dyn_kips\n"
     "206,T-ATF,FFG7,9.0,20.0,180.0,800.0,f,79000.0,500,98.5\n"
-    "9999,FFG7,FFG7,9.0,20.0,180.0,800.0,f,79000.0,500,98.5\n";
+    "9999,T-ATF,FFG7,9.0,20.0,180.0,800.0,f,900000.0,500,98.5\n";
 
 TEST(CliValidate, ReportsFailuresAndResumes) {  // cli-validate-1, cli-validate-2
   const auto dir = make_temp_dir("towdb-validate");
@@ -36,8 +38,8 @@ TEST(CliValidate, ReportsFailuresAndResumes) {  // cli-validate-1, cli-validate-
   ASSERT_EQ(first.exit_code, 0) << first.err;
   const std::string report = test::read_text(dir / "out" / "report.md");
   EXPECT_NE(report.find("## Targets"), std::string::npos);
-  EXPECT_NE(report.find("| 9999 | FFG 7 | FFG 7 |"), std::string::npos) << report;
-  EXPECT_NE(report.find("not a tug"), std::string::npos) << report;
+  EXPECT_NE(report.find("| 9999 | T-ATF 166 | FFG 7 |"), std::string::npos) << report;
+  EXPECT_NE(report.find("breaking strength"), std::string::npos) << report;
   const std::string journal = test::read_text(dir / "out" / "cases.csv");
   const auto ok_line = journal.find("\n206,T-ATF 166,FFG 7,");
   ASSERT_NE(ok_line, std::string::npos) << journal;
@@ -72,6 +74,33 @@ TEST(CliValidate, BadArgumentsExitTwo) {  // cli-validate-3
                                           (dir / "out").string() + "' --filter tow=YRBM");
   EXPECT_EQ(nothing.exit_code, 2);
   EXPECT_NE(nothing.err.find("no cases selected"), std::string::npos) << nothing.err;
+  // The output directory must be one (or be creatable in an existing one) ...
+  const CommandResult out_file = run_towdb("validate --cases '" + (dir / "table.csv").string() + "' --out '" +
+                                           (dir / "table.csv").string() + "'");
+  EXPECT_EQ(out_file.exit_code, 2);
+  EXPECT_NE(out_file.err.find("--out = " + (dir / "table.csv").string() + ": is a file"), std::string::npos)
+      << out_file.err;
+  const CommandResult out_deep = run_towdb("validate --cases '" + (dir / "table.csv").string() + "' --out '" +
+                                           (dir / "no" / "such" / "out").string() + "'");
+  EXPECT_EQ(out_deep.exit_code, 2);
+  EXPECT_NE(out_deep.err.find("its parent directory"), std::string::npos) << out_deep.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "no"));
+  // ... and every row's values in the ranges a sweep file accepts, the tug a tug.
+  const std::string header = "case,tug,tow,speed_kt,wind_kt,heading_deg,length_ft,line,mean_lbf,days,dyn_kips\n";
+  const std::vector<std::pair<std::string, std::string>> rows = {
+      {"7,T-ATF,FFG7,9.0,20.0,400.0,800.0,f,79000.0,500,98.5", "table.csv:2: heading_deg = 400: must be in [0, 360]"},
+      {"7,T-ATF,FFG7,9.0,20.0,0.0,800.0,f,79000.0,0,98.5", "table.csv:2: days = 0: must be in [1,"},
+      {"7,T-ATF,FFG7,9.0,0.0,0.0,800.0,f,79000.0,500,98.5", "table.csv:2: wind_kt = 0: must be in [1, 100]"},
+      {"7,FFG7,FFG7,9.0,20.0,0.0,800.0,f,79000.0,500,98.5", "table.csv:2: tug 'FFG7' is not a tug"},
+  };
+  for (const auto& [row, message] : rows) {
+    { std::ofstream(dir / "table.csv") << header << row << "\n"; }
+    const CommandResult r = run_towdb("validate --cases '" + (dir / "table.csv").string() + "' --out '" +
+                                      (dir / "rows").string() + "'");
+    EXPECT_EQ(r.exit_code, 2) << row;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "rows")) << row;
+  }
   std::filesystem::remove_all(dir);
 }
 

@@ -149,16 +149,23 @@ TEST(ShipFileBadInput, StationsOutOfOrder) {
 }
 TEST(ShipFileBadInput, DragSpeedsNotIncreasing) {
   expect_vessel_error(mutate(barge_text(), "speed_kt = [2.0, 6.0, 10.0]", "speed_kt = [2.0, 10.0, 6.0]"),
-                      R"(drag speed = .*: speeds must increase strictly)");
+                      R"(barge.toml:\d+: drag.speed_kt: speed_kt\[2\] = 6: the speeds must increase)");
 }
 TEST(ShipFileBadInput, TowlinesOnATow) {
   expect_vessel_error(barge_text() + "\n[towlines]\nwire_hawser = \"a\"\nfiber_hawser = \"b\"\npendant = \"c\"\n",
                       R"(\[towlines\] is only allowed for role = "tug")");
 }
 TEST(ShipFileBadInput, TugWithoutPropellers) {
-  expect_vessel_error(mutate(barge_text(), "role = \"tow\"", "role = \"tug\"") +
+  expect_vessel_error(mutate(mutate(barge_text(), "role = \"tow\"", "role = \"tug\""), "x_ft = { value = 50.0",
+                             "x_ft = { value = -50.0") +
                           "\n[towlines]\nwire_hawser = \"a\"\nfiber_hawser = \"b\"\npendant = \"c\"\n",
                       R"(a tug needs a \[propellers\] table)");
+}
+TEST(ShipFileBadInput, TowPointOnTheWrongSide) {  // docs/ship-files.md: tug aft (< 0), tow bow (> 0)
+  expect_vessel_error(mutate(barge_text(), "x_ft = { value = 50.0", "x_ft = { value = -50.0"),
+                      R"(barge.toml:\d+: tow_point.x_ft: x_ft = -50: a tow's towing fitting is forward of midships)");
+  expect_vessel_error(mutate(barge_text(), "role = \"tow\"", "role = \"tug\""),
+                      R"(tow_point.x_ft: x_ft = 50: a tug's tow point is aft of midships)");
 }
 TEST(ShipFileBadInput, MissingFile) {
   EXPECT_THROW(load_vessel("/nonexistent/ship.toml"), InputError);
