@@ -51,10 +51,12 @@ sea::SeaState sea_state(const SimulateArgs& a) {
                      " with --hs-ft/--tp-s: give one sea, a wind speed (Pierson-Moskowitz) or Hs and Tp");
   }
   if (!two_parameter && !a.spectrum.empty()) {
-    throw InputError("--spectrum " + a.spectrum + ": needs --hs-ft and --tp-s (with --wind-kt the sea is Pierson-Moskowitz)");
+    throw InputError("--spectrum " + a.spectrum +
+                     ": needs --hs-ft and --tp-s (with --wind-kt the sea is Pierson-Moskowitz)");
   }
   if (a.gamma_given && a.spectrum != "jonswap" && !(a.swell_hs_ft > 0.0)) {
-    throw InputError("--gamma " + format_value(a.gamma) + ": only a JONSWAP sea (--spectrum jonswap) or a swell uses it");
+    throw InputError("--gamma " + format_value(a.gamma) +
+                     ": only a JONSWAP sea (--spectrum jonswap) or a swell uses it");
   }
   if (!(a.swell_hs_ft > 0.0) && (a.swell_tp_s > 0.0 || a.swell_heading_given)) {
     throw InputError("--swell-tp-s / --swell-heading-deg: need --swell-hs-ft (the swell's height)");

@@ -30,9 +30,10 @@
 // each day takes its own substeps with the scalar code. Every lane performs
 // the IEEE operations of the scalar code in the same order (no fused
 // multiply-add: every target is built with -ffp-contract=off,
-// cmake/TowdbHelpers.cmake), so a day's results are bit-identical whichever path or group it ran in. Tension
-// laws are therefore written once, as templates on the number type (double or
-// lanes::Lanes<K>), with the lanes:: helpers for max, min, clamp and select.
+// cmake/TowdbHelpers.cmake), so a day's results are bit-identical whichever
+// path or group it ran in. Tension laws are therefore written once, as
+// templates on the number type (double or lanes::Lanes<K>), with the lanes::
+// helpers for max, min, clamp and select.
 //
 // Integrator: classical RK4. The step is the forcing interval dt, split into
 // m substeps where the local line stiffness makes the relative surge mode fast
