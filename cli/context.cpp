@@ -54,7 +54,9 @@ void check_output_dir(const std::string& flag, const std::string& path) {
   if (fs::exists(p, ec) && !fs::is_directory(p, ec)) {
     throw InputError(flag + " = " + path + ": is a file, expected a directory (existing or new)");
   }
-  const fs::path parent = p.lexically_normal().has_parent_path() ? p.lexically_normal().parent_path() : fs::path(".");
+  fs::path dir = p.lexically_normal();
+  if (!dir.has_filename() && dir.has_parent_path()) dir = dir.parent_path();  // "out/" names "out"
+  const fs::path parent = dir.has_parent_path() ? dir.parent_path() : fs::path(".");
   if (!fs::exists(p, ec) && !fs::is_directory(parent, ec)) {
     throw InputError(flag + " = " + path + ": its parent directory " + parent.string() + " does not exist");
   }

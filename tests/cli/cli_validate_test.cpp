@@ -85,6 +85,10 @@ TEST(CliValidate, BadArgumentsExitTwo) {  // cli-validate-3
   EXPECT_EQ(out_deep.exit_code, 2);
   EXPECT_NE(out_deep.err.find("its parent directory"), std::string::npos) << out_deep.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "no"));
+  const CommandResult slash = run_towdb("validate --cases '" + (dir / "table.csv").string() + "' --out '" +
+                                        (dir / "new").string() + "/' --filter tow=YRBM");
+  EXPECT_EQ(slash.exit_code, 2);
+  EXPECT_NE(slash.err.find("no cases selected"), std::string::npos) << slash.err;  // "new/" is a new directory
   // ... and every row's values in the ranges a sweep file accepts, the tug a tug.
   const std::string header = "case,tug,tow,speed_kt,wind_kt,heading_deg,length_ft,line,mean_lbf,days,dyn_kips\n";
   const std::vector<std::pair<std::string, std::string>> rows = {
