@@ -404,11 +404,18 @@ struct SurgeKernel {
                       p_.cos_alpha_tow * p_.cos_alpha_tow / p_.tow_mass_kg),
         hull_rate(std::max(p_.tug_damping_n_s_m / p_.tug_mass_kg, p_.tow_damping_n_s_m / p_.tow_mass_kg)) {}
 
+  // The line's extension and its rate (EQ-SURGE-3).
+  template <typename T>
+  TOWDB_SURGE_INLINE void extension(const StateOf<T>& y, const ForcingOf<T>& g, T& xi, T& xi_dot) const {
+    xi = y.x1 * p.cos_alpha_tug - y.x7 * p.cos_alpha_tow + g.xi_ns;
+    xi_dot = y.v1 * p.cos_alpha_tug - y.v7 * p.cos_alpha_tow + g.xi_ns_dot;
+  }
+
   // Derivative of the state; also returns the tension it used.
   template <typename T>
   TOWDB_SURGE_INLINE StateOf<T> derivative(const StateOf<T>& y0, const ForcingOf<T>& g, T* tau_out) const {
-    const T xi = y0.x1 * p.cos_alpha_tug - y0.x7 * p.cos_alpha_tow + g.xi_ns;
-    const T xi_dot = y0.v1 * p.cos_alpha_tug - y0.v7 * p.cos_alpha_tow + g.xi_ns_dot;
+    T xi, xi_dot;
+    extension(y0, g, xi, xi_dot);
     const T tau = law.tension(xi, xi_dot);
     *tau_out = tau;
     return StateOf<T>{y0.v1, (-tau * p.cos_alpha_tug + g.f1 - p.tug_damping_n_s_m * y0.v1) / p.tug_mass_kg, y0.v7,
@@ -419,8 +426,8 @@ struct SurgeKernel {
   // forcing g0: max(omega_loc, beta_loc) from the local stiffness and damping.
   template <typename T>
   TOWDB_SURGE_INLINE T rate(const StateOf<T>& y, const ForcingOf<T>& g0) const {
-    const T xi = y.x1 * p.cos_alpha_tug - y.x7 * p.cos_alpha_tow + g0.xi_ns;
-    const T xi_dot = y.v1 * p.cos_alpha_tug - y.v7 * p.cos_alpha_tow + g0.xi_ns_dot;
+    T xi, xi_dot;
+    extension(y, g0, xi, xi_dot);
     const T zero = lanes::splat<T>(0.0);
     const T k_line = lanes::max(zero, law.stiffness(xi, xi_dot)) * inv_mass_line;
     const T c_loc = lanes::max(zero, law.damping(xi, xi_dot));
@@ -433,9 +440,15 @@ struct SurgeKernel {
     return lanes::max(omega, c_loc * inv_mass_line + hull_rate);
   }
 
+  // Whether one step covers an interval of length dt at that rate (also for
+  // NaN: the caller's checks report it).
+  TOWDB_SURGE_INLINE static bool one_substep(double rate, double dt, const IntegratorOptions& options) {
+    return !(rate * dt > options.max_omega_h);
+  }
+
   // Substeps for an interval of length dt at that rate.
   TOWDB_SURGE_INLINE static int substeps(double rate, double dt, const IntegratorOptions& options) {
-    if (!(rate * dt > options.max_omega_h)) return 1;  // also NaN: the caller's checks report it
+    if (one_substep(rate, dt, options)) return 1;
     return std::min(options.max_substeps, static_cast<int>(std::ceil(rate * dt / options.max_omega_h)));
   }
 
@@ -564,29 +577,39 @@ TOWDB_SURGE_INLINE ForcingOf<lanes::Lanes<K>> midpoint_lanes(const LockstepForci
           midpoint_lanes<K>(f.xi_ns_dot_m_s, c)};
 }
 
-// The loop shared by integrate_day (K = 1, one DayForcing) and integrate_days.
+// The steps of one periodic day of n samples: integration starts at rest
+// `warmup` samples before sample 0 (the warm-up is the day's own end, at
+// sample `start`) and runs `total` intervals; statistics from sample 0 on.
+struct DaySteps {
+  std::size_t warmup, start, total;
+};
+
+inline DaySteps day_steps(double warmup_s, double dt, std::size_t n) {
+  const std::size_t warmup = static_cast<std::size_t>(std::ceil(warmup_s / dt));
+  return {warmup, (n - warmup % n) % n, warmup + n};
+}
+
+// The single-day loop (integrate_day).
 template <typename TensionLaw>
 DayStatistics integrate_one(const SurgeKernel<TensionLaw>& kernel, const DayForcing& f,
                             const IntegratorOptions& options, std::vector<double>* trace) {
   const std::size_t n = f.size();
   const double dt = f.dt_s;
   const Records<1> r = records_of(f);
-  const std::size_t warmup_samples = static_cast<std::size_t>(std::ceil(options.warmup_s / dt));
-  const std::size_t start = (n - warmup_samples % n) % n;  // periodic: warm-up is the day's own end
-  const std::size_t total = warmup_samples + n;
+  const DaySteps steps = day_steps(options.warmup_s, dt, n);
   DayStatistics stats;
   stats.max_tension_n = -kernel.mean;
   stats.min_tension_n = std::numeric_limits<double>::infinity();
   if (trace) trace->assign(n, 0.0);
   State y{0.0, 0.0, 0.0, 0.0};
   bool was_slack = false;
-  std::size_t i = start;
-  for (std::size_t step = 0; step < total; ++step) {
+  std::size_t i = steps.start;
+  for (std::size_t step = 0; step < steps.total; ++step) {
     const Stencil c = stencil(i, n);
-    const bool recording = step >= warmup_samples;
+    const bool recording = step >= steps.warmup;
     const Forcing g0 = sample_at(r, i);
     const int m = kernel.substeps(kernel.rate(y, g0), dt, options);
-    kernel.interval(y, dt, r, c, g0, m, recording, recording ? step - warmup_samples : 0, stats, was_slack, trace);
+    kernel.interval(y, dt, r, c, g0, m, recording, recording ? step - steps.warmup : 0, stats, was_slack, trace);
     i = c.i1;
   }
   return stats;
@@ -608,9 +631,7 @@ std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const Lock
   TOWDB_ASSERT(f.tow_force_n.size() == n * K && f.xi_ns_m.size() == n * K && f.xi_ns_dot_m_s.size() == n * K);
   const detail::SurgeKernel<TensionLaw> kernel(p, law);
 
-  const std::size_t warmup_samples = static_cast<std::size_t>(std::ceil(options.warmup_s / dt));
-  const std::size_t start = (n - warmup_samples % n) % n;  // periodic: warm-up is the day's own end
-  const std::size_t total = warmup_samples + n;
+  const detail::DaySteps steps = detail::day_steps(options.warmup_s, dt, n);
 
   detail::LaneStatistics<K> stats{};
   stats.max_tension = lanes::splat<V>(-kernel.mean);
@@ -621,15 +642,15 @@ std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const Lock
   const V zero = lanes::splat<V>(0.0);
   StateOf<V> y{zero, zero, zero, zero};
 
-  std::size_t i = start;
-  for (std::size_t step = 0; step < total; ++step) {
+  std::size_t i = steps.start;
+  for (std::size_t step = 0; step < steps.total; ++step) {
     const detail::Stencil c = detail::stencil(i, n);
-    const bool recording = step >= warmup_samples;
-    const std::size_t sample_index = recording ? step - warmup_samples : 0;
+    const bool recording = step >= steps.warmup;
+    const std::size_t sample_index = recording ? step - steps.warmup : 0;
     const ForcingOf<V> g0 = detail::sample_lanes(f, i);
     const V rate = kernel.rate(y, g0);
     bool one_step = true;
-    for (std::size_t l = 0; l < K; ++l) one_step = one_step && !(rate[l] * dt > options.max_omega_h);
+    for (std::size_t l = 0; l < K; ++l) one_step = one_step && kernel.one_substep(rate[l], dt, options);
     if (one_step) {
       // Every day takes one step: kernel.interval with m = 1, all lanes at once.
       const ForcingOf<V> gm = detail::midpoint_lanes(f, c);
