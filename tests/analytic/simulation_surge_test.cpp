@@ -6,6 +6,9 @@
 //   surge-3  a slack-prone bilinear line: slack time and snatch events counted.
 //   surge-4  integrate_days (lock step) equals integrate_day on each day alone,
 //            bit for bit, also when the days need different substep counts.
+//   surge-5  a tension peak halfway between two steps (EQ-SURGE-5): the
+//            samples read it low by 1 - cos(w h / 2); the maximum does not.
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -68,7 +71,7 @@ DayForcing harmonic_tug_force(double amplitude_n, double omega_rad_s, double dt_
 
 // Closed-form amplitude of tau for EQ-SURGE-1..4 with a linear line:
 // [-w^2 M + i w (B + c s s^T) + k s s^T] X = F e1, s = (c1, -c2), tau = (k + i w c) s.X.
-double linear_tension_amplitude(const SurgeParameters& p, const LinearLine& line, double force_n, double w) {
+std::complex<double> linear_tension(const SurgeParameters& p, const LinearLine& line, double force_n, double w) {
   using C = std::complex<double>;
   const double s1 = p.cos_alpha_tug, s2 = -p.cos_alpha_tow;
   const C kc(line.k, w * line.c);
@@ -77,7 +80,11 @@ double linear_tension_amplitude(const SurgeParameters& p, const LinearLine& line
   const C a12 = kc * s1 * s2;
   const C det = a11 * a22 - a12 * a12;
   const C x1 = a22 * force_n / det, x7 = -a12 * force_n / det;
-  return std::abs(kc * (s1 * x1 + s2 * x7));
+  return kc * (s1 * x1 + s2 * x7);
+}
+
+double linear_tension_amplitude(const SurgeParameters& p, const LinearLine& line, double force_n, double w) {
+  return std::abs(linear_tension(p, line, force_n, w));
 }
 
 TEST(SurgeIntegrator, LinearHarmonicResponseMatchesClosedForm) {  // surge-1, EVIDENCE-OF: EQ-SURGE-1..4
@@ -241,6 +248,37 @@ TEST(SurgeIntegrator, LockStepDaysEqualSingleDaysBitForBit) {  // surge-4
   EXPECT_GT(substeps_max, substeps_min);
   EXPECT_EQ(together[0].slack_time_s, 0.0);
   EXPECT_GT(together[3].slack_time_s, 0.0);
+}
+
+TEST(SurgeIntegrator, PeakBetweenStepsIsRead) {  // surge-5, EVIDENCE-OF: EQ-SURGE-5
+  // A soft line (relative mode 0.13 rad/s: one RK4 step per 2.5 s sample,
+  // omega h = 0.33 < max_omega_h) and a tug force of period 8 dt = 20 s,
+  // phased so that every tension crest falls halfway between two samples.
+  const SurgeParameters p = tug_and_tow();
+  const LinearLine line{4.0e4, 2.0e3, 1.0e9};
+  const double dt = 2.5, w = 2.0 * kPi / (8.0 * dt);
+  const std::complex<double> tension = linear_tension(p, line, 1.0e5, w);
+  const double psi = -std::arg(tension) - w * 0.5 * dt;  // crest at t = dt/2 (mod dt)
+  const std::size_t n = 8 * 50;
+  DayForcing f = harmonic_tug_force(0.0, w, dt, n);
+  for (std::size_t i = 0; i < n; ++i) f.tug_force_n[i] = 1.0e5 * std::cos(w * static_cast<double>(i) * dt + psi);
+  IntegratorOptions o;
+  o.warmup_s = 3000.0;  // the slowest mode decays as exp(-(B1+B7)/(M1+M7) t): e^-50 after 3000 s
+  std::vector<double> trace;
+  const DayStatistics s = integrate_day(p, f, line, o, &trace);
+  ASSERT_EQ(s.substeps, static_cast<long>(n + 1200));  // the premise: one step per sample
+  const double amplitude = std::abs(tension);
+  const double sampled = *std::max_element(trace.begin(), trace.end());
+  // Both read the integrated response, which is low by the forcing's
+  // Catmull-Rom midpoint ((9 cos(wh/2) - cos(3wh/2)) / 8 = 0.9915 of the
+  // crest at w h = 0.79) and RK4's own amplitude error.
+  constexpr double kIntegrationRelTol = 1e-2;
+  EXPECT_REL_CLOSE(s.max_tension_n, amplitude, kIntegrationRelTol);
+  // The samples straddle the crests and read cos(w dt / 2) = 0.924 of the
+  // maximum; the dense-output midpoint is within (w h)^4 / 384 = 0.1 % of it.
+  constexpr double kDenseOutputRelTol = 2e-3;
+  EXPECT_REL_CLOSE(sampled / s.max_tension_n, std::cos(0.5 * w * dt), kDenseOutputRelTol);
+  EXPECT_LT(sampled, 0.93 * amplitude);  // the premise: sampling alone misses 7 %
 }
 
 }  // namespace
