@@ -204,7 +204,8 @@ int run_simulate(const Context& ctx, const SimulateArgs& a) {
     j["record"] = {{"time_step_s", r.record_time_step_s},
                    {"samples", r.record_samples},
                    {"wave_components", r.wave_components},
-                   {"retained_variance_fraction", r.retained_variance_fraction}};
+                   {"retained_variance_fraction", r.retained_variance_fraction},
+                   {"fft_plan", r.fft_plan_from_stored_wisdom ? "stored wisdom" : "estimate"}};
     j["runtime_s"] = r.timings.total_s;
     j["timings_s"] = {{"towline", r.timings.towline_s},
                       {"hydrodynamics", r.timings.hydrodynamics_s},

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <mutex>
@@ -13,6 +14,7 @@
 
 #include "common/error.hpp"
 #include "common/random.hpp"
+#include "sea/fft_wisdom.hpp"
 
 namespace towdb::sea {
 namespace {
@@ -36,6 +38,14 @@ constexpr std::size_t kPhaseTableSize = std::size_t{1} << kPhaseTableBits;
 std::mutex& fftw_planner_mutex() {
   static std::mutex mutex;
   return mutex;
+}
+
+// Loads kStoredRecordWisdom into FFTW once per process, before the first plan
+// (caller holds the planner lock). FFTW refuses wisdom from another FFTW
+// version; codelets this processor lacks make the wisdom-only plan fail.
+void import_stored_wisdom() {
+  static const bool imported = fftw_import_wisdom_from_string(kStoredRecordWisdom) != 0;
+  (void)imported;
 }
 
 struct PhaseTables {
@@ -261,6 +271,7 @@ struct DaySynthesizer::Impl {
   std::vector<std::pair<int, int>> gaps;
   bool zero_by_gaps = false;
   fftw_plan c2r = nullptr;
+  bool plan_from_wisdom = false;  // c2r came from kStoredRecordWisdom
 
   void clear_input(fftw_complex* spectrum) const {
     if (zero_by_gaps) {
@@ -377,12 +388,19 @@ DaySynthesizer::DaySynthesizer(RecordPlan plan,
     im.drift_gain.push_back(std::move(gain));
     im.drift_mean.push_back(mean);
   }
-  // One c2r plan for every series, made once with FFTW_ESTIMATE: the plan (and
-  // so every bit of the output) does not depend on timing measurements.
+  // One c2r plan for every series, made once and never from timing
+  // measurements made here, so that the plan (and so every bit of the output)
+  // is the same in every process: the stored wisdom's plan where it applies
+  // (fft_wisdom.hpp), else FFTW_ESTIMATE's.
   std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+  import_stored_wisdom();
   auto* in = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * static_cast<std::size_t>(im.n_spec)));
   auto* out = static_cast<double*>(fftw_malloc(sizeof(double) * static_cast<std::size_t>(im.n)));
-  im.c2r = fftw_plan_dft_c2r_1d(im.n, in, out, FFTW_ESTIMATE);
+  if (in != nullptr && out != nullptr) {
+    im.c2r = fftw_plan_dft_c2r_1d(im.n, in, out, FFTW_PATIENT | FFTW_WISDOM_ONLY);
+    im.plan_from_wisdom = im.c2r != nullptr;
+    if (im.c2r == nullptr) im.c2r = fftw_plan_dft_c2r_1d(im.n, in, out, FFTW_ESTIMATE);
+  }
   fftw_free(in);
   fftw_free(out);
   if (im.c2r == nullptr) {
@@ -398,6 +416,31 @@ const RecordPlan& DaySynthesizer::plan() const { return impl_->plan; }
 std::size_t DaySynthesizer::linear_count() const { return impl_->linear_gain.size(); }
 std::size_t DaySynthesizer::drift_count() const { return impl_->drift_gain.size(); }
 double DaySynthesizer::drift_mean(std::size_t k) const { return impl_->drift_mean.at(k); }
+bool DaySynthesizer::plan_from_stored_wisdom() const { return impl_->plan_from_wisdom; }
+
+std::string plan_record_wisdom(std::int64_t samples) {
+  require_in_range("plan_record_wisdom: samples", static_cast<double>(samples), 8.0,
+                   static_cast<double>(kMaxSamples));
+  std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+  fftw_forget_wisdom();  // plan from scratch, not from the stored wisdom
+  const auto n = static_cast<std::size_t>(samples);
+  auto* in = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * (n / 2 + 1)));
+  auto* out = static_cast<double*>(fftw_malloc(sizeof(double) * n));
+  fftw_plan plan = in != nullptr && out != nullptr
+                       ? fftw_plan_dft_c2r_1d(static_cast<int>(samples), in, out, FFTW_PATIENT)
+                       : nullptr;
+  std::string wisdom;
+  if (plan != nullptr) {
+    char* text = fftw_export_wisdom_to_string();
+    if (text != nullptr) wisdom = text;
+    std::free(text);  // FFTW: "the caller is responsible for deallocating it with free"
+    fftw_destroy_plan(plan);
+  }
+  fftw_free(in);
+  fftw_free(out);
+  if (wisdom.empty()) throw NumericalError("FFTW: no plan for a c2r of " + std::to_string(samples) + " samples");
+  return wisdom;
+}
 
 DaySynthesizer::Workspace DaySynthesizer::make_workspace() const {
   const Impl& im = *impl_;

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "common/constants.hpp"
@@ -148,11 +149,21 @@ class DaySynthesizer {
   // Time mean of -|E_k|^2 that EQ-SEA-9 removes: sum_j a_j^2 D_k(w_j) (> 0 is a
   // resistance: the mean second-order force is minus this) [output unit].
   double drift_mean(std::size_t k) const;
+  // Whether the FFT plan came from the stored wisdom (sea/fft_wisdom.hpp);
+  // false: FFTW_ESTIMATE's plan, whose records differ in the last bits.
+  bool plan_from_stored_wisdom() const;
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// The FFTW wisdom of the c2r plan of a record of `samples` points, planned
+// from scratch with FFTW_PATIENT (minutes for a day's 86,400 points; it times
+// candidate plans, so two runs may choose differently). What
+// tools/make_fftw_wisdom prints, for sea/fft_wisdom.cpp. Forgets the wisdom
+// already loaded in this process.
+std::string plan_record_wisdom(std::int64_t samples);
 
 }  // namespace towdb::sea
 

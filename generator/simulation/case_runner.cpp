@@ -396,6 +396,7 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
     }
   }
   m->synthesizer = std::make_unique<sea::DaySynthesizer>(plan, linear, drift);
+  r.fft_plan_from_stored_wisdom = m->synthesizer->plan_from_stored_wisdom();
 
   m->surge.tug_mass_kg = tug.hull.displacement_kg * (1.0 + tug.hull.surge_added_mass_ratio);
   m->surge.tow_mass_kg = tow.hull.displacement_kg * (1.0 + tow.hull.surge_added_mass_ratio);

@@ -159,6 +159,7 @@ struct CaseResult {
   std::int64_t record_samples = 0;
   std::size_t wave_components = 0;
   double retained_variance_fraction = 0.0;
+  bool fft_plan_from_stored_wisdom = false;  // sea/fft_wisdom.hpp; false: FFTW_ESTIMATE's plan
   std::vector<DayResult> days;
   CaseStatistics statistics;
   double slack_fraction = 0.0;
