@@ -85,7 +85,8 @@
 //
 // NOTES FOR CALLERS
 //   * Cost: per case, RecordPlan + DaySynthesizer (O(J) spectrum integrals, one
-//     FFTW_ESTIMATE plan); per day, J phasors and one c2r of size N per linear
+//     FFTW plan: the stored wisdom's for N = 86,400, else FFTW_ESTIMATE's,
+//     fft_wisdom.hpp); per day, J phasors and one c2r of size N per linear
 //     series, two per drift series (N = 55296 for a 2 rad/s cutoff and a day).
 //   * A record sampled at dt = pi / w_c under-reads its peaks by about
 //     (w dt)^2 / 24 (2% for wave elevation at dt = 0.63 s): set
