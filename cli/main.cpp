@@ -6,11 +6,15 @@
 #include "cli.hpp"
 #include "common/error.hpp"
 #include "common/version.hpp"
+#include "sweep/numerics.hpp"
 
 int main(int argc, char** argv) {
   using towdb::cli::Context;
   CLI::App app{"towdb: extreme towline tension for open-ocean towing (tug, tow, sea, towline)", "towdb"};
-  app.set_version_flag("--version", std::string("towdb ") + towdb::kVersion);
+  app.set_version_flag("--version", [] {
+    return std::string("towdb ") + towdb::kVersion + " (numerics fingerprint " + towdb::sweep::numerics_fingerprint() +
+           ")";
+  });
   app.require_subcommand(1);
   Context ctx;
   app.add_option("--ships-dir", ctx.ships_dir,

@@ -17,6 +17,7 @@
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
 #include "store/database.hpp"
+#include "sweep/numerics.hpp"
 #include "sweep/progress.hpp"
 #include "sweep/serialize.hpp"
 
@@ -251,6 +252,7 @@ Bytes encode_work(std::size_t work, const CaseSpec& spec, const CaseKeys& keys, 
   w.i64(static_cast<std::int64_t>(work));
   w.str(keys.inputs_sha256);
   w.str(code_version);
+  w.str(numerics_fingerprint());
   write_spec(w, spec);
   return w.take();
 }
@@ -329,17 +331,21 @@ void run_worker(const io::ShipCatalog& catalog, const CaseRunner& runner, int ra
     const auto work = static_cast<std::size_t>(r.i64());
     const std::string inputs_sha256 = r.str();
     const std::string code_version = r.str();
+    const std::string rank0_numerics = r.str();
     const CaseSpec spec = read_spec(r);
     CaseEvent e;
-    // The ship files this rank reads must be the ones rank 0 hashed.
-    std::string mismatch;
-    try {
-      if (case_keys(spec, catalog, code_version).inputs_sha256 != inputs_sha256) {
-        mismatch = "MPI rank " + std::to_string(rank) +
-                   ": its ship or towline files differ from rank 0's (inputs_sha256 mismatch)";
+    // This rank must compute the bits rank 0 would (numerics.hpp), from the
+    // ship files rank 0 hashed.
+    std::string mismatch = numerics_mismatch(rank, numerics_fingerprint(), rank0_numerics);
+    if (mismatch.empty()) {
+      try {
+        if (case_keys(spec, catalog, code_version).inputs_sha256 != inputs_sha256) {
+          mismatch = "MPI rank " + std::to_string(rank) +
+                     ": its ship or towline files differ from rank 0's (inputs_sha256 mismatch)";
+        }
+      } catch (const std::exception& x) {
+        mismatch = "MPI rank " + std::to_string(rank) + ": " + x.what();
       }
-    } catch (const std::exception& x) {
-      mismatch = "MPI rank " + std::to_string(rank) + ": " + x.what();
     }
     if (mismatch.empty()) {
       e = run_one(work, spec, catalog, runner);

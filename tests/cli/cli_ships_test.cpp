@@ -100,6 +100,7 @@ TEST(CliShips, HelpAndVersionExitZero) {  // cli-ships-5
   const CommandResult version = run_towdb("--version");
   EXPECT_EQ(version.exit_code, 0);
   EXPECT_NE(version.out.find("towdb "), std::string::npos);
+  EXPECT_NE(version.out.find("numerics fingerprint "), std::string::npos) << version.out;
 }
 
 }  // namespace

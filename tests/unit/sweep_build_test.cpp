@@ -17,6 +17,8 @@
 //   sweep-build-9  a stop request (SIGINT) leaves unstarted cases pending and the build
 //                  'interrupted'; the next build continues without --resume
 //   sweep-build-10 the progress line: done/total, rate, ETA, failures
+//   sweep-build-11 the numerics fingerprint (sweep/numerics.hpp): 16 hex digits, the same
+//                  from any thread; an MPI rank with another one is refused by name
 #include <sqlite3.h>
 #include <sys/file.h>
 #include <fcntl.h>
@@ -25,11 +27,13 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include <gtest/gtest.h>
 
 #include "common/units.hpp"
 #include "store/database.hpp"
+#include "sweep/numerics.hpp"
 #include "sweep/progress.hpp"
 #include "sweep/sweep.hpp"
 #include "sweep_test_runner.hpp"
@@ -356,5 +360,19 @@ TEST(SweepBuild, ProgressLine) {  // sweep-build-10
             "10/10 cases [########################] 100.0%  2.00 cases/s  ETA 0s  0 failed");
 }
 
+
+TEST(SweepBuild, NumericsFingerprintNamesAMismatchingRank) {  // sweep-build-11
+  const std::string here = sweep::numerics_fingerprint();
+  ASSERT_EQ(here.size(), 16u);
+  EXPECT_EQ(here.find_first_not_of("0123456789abcdef"), std::string::npos) << here;
+  std::string other_thread;
+  std::thread([&] { other_thread = sweep::numerics_fingerprint(); }).join();
+  EXPECT_EQ(other_thread, here);
+  EXPECT_EQ(sweep::numerics_mismatch(3, here, here), "");
+  const std::string refusal = sweep::numerics_mismatch(3, here, "0123456789abcdef");
+  EXPECT_NE(refusal.find("MPI rank 3"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find(here), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("0123456789abcdef"), std::string::npos) << refusal;
+}
 }  // namespace
 }  // namespace towdb::test
