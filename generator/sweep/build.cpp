@@ -357,6 +357,36 @@ void run_worker(const io::ShipCatalog& catalog, const CaseRunner& runner, int ra
   }
 }
 
+// The key of meta that holds the numerics fingerprint of the processes that
+// computed the database's cases (numerics.hpp).
+constexpr const char* kNumericsKey = "numerics_fingerprint";
+
+// One database, one numerics fingerprint: a build that would compute a case
+// on a machine whose fingerprint differs from the one the database records is
+// refused before anything is written (its results would differ in the last
+// bits from what the first machine computes). A build with nothing to compute
+// is not refused. Databases written before version 0.2.0 record none.
+void check_numerics(store::Database& db, const std::filesystem::path& path, const std::vector<CaseKeys>& keys,
+                    bool retry_failed, const std::string& fingerprint) {
+  store::Statement stored_st = db.prepare("SELECT value FROM meta WHERE key = ?");
+  stored_st.bind(1, kNumericsKey);
+  if (!stored_st.step()) return;
+  const std::string stored = stored_st.column_text(0);
+  if (stored == fingerprint) return;
+  store::Statement by_key = db.prepare("SELECT status FROM cases WHERE case_key = ?");
+  for (const CaseKeys& k : keys) {
+    by_key.bind(1, k.case_key);
+    const std::string status = by_key.step() ? by_key.column_text(0) : "";
+    by_key.reset();
+    if (status == "done" || (status == "failed" && !retry_failed)) continue;
+    throw InputError(path.string() + ": meta." + kNumericsKey + " = " + stored +
+                     ", but this machine computes with numerics fingerprint " + fingerprint +
+                     " (towdb --version; another FFT plan or math library): its cases would differ in the last "
+                     "bits from the database's. Build on a machine kind with " + stored +
+                     ", or into a new database");
+  }
+}
+
 }  // namespace
 
 void BuildOptions::validate() const {
@@ -443,6 +473,7 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
     lock.emplace(db_path);
     db.emplace(store::Database::open(db_path, store::Database::Mode::kCreate));
     writer.emplace(*db);
+    check_numerics(*db, db_path, keys, options.retry_failed, numerics_fingerprint());
     const std::vector<std::int64_t> unfinished = writer->unfinished_builds();
     if (!unfinished.empty()) {
       if (!options.resume) {
@@ -461,6 +492,8 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
     p.threads = options.threads;
     p.mpi_ranks = ranks;
     summary.build_id = writer->begin_build(p);
+    store::Statement record = db->prepare("INSERT OR IGNORE INTO meta (key, value) VALUES (?, ?)");
+    record.bind(1, kNumericsKey).bind(2, numerics_fingerprint()).run();
   } catch (...) {
     stop_workers();
     throw;

@@ -10,13 +10,15 @@
 //     ... by processor at load time (for example with fused multiply-add).
 // The fingerprint is the first 16 hex digits of SHA-256 over the output bits
 // of both at fixed arguments: a one-day record of 86,400 samples (the
-// simulation's), and sin, cos, sincos-style pairs, exp, log, pow, atan2,
+// simulation's), and sin, cos, exp, log, pow, atan2, tanh,
 // hypot and cbrt at 64 points each. Equal fingerprints do not prove equal
 // results for every input, but a differing one proves that results differ.
 //
-// Used by the MPI build (a rank whose fingerprint differs from rank 0's
-// refuses its cases, so a database never mixes two machines' last bits) and
-// printed by `towdb --version`. Computed once per process (a few ms).
+// Used by the build so that a database never mixes two machine kinds' last
+// bits: an MPI rank whose fingerprint differs from rank 0's refuses its cases,
+// and a database records its first build's fingerprint (meta) and refuses a
+// later build that would compute cases with another one (build.cpp). Printed
+// by `towdb --version`. Computed once per process (a few ms).
 #ifndef TOWDB_SWEEP_NUMERICS_HPP
 #define TOWDB_SWEEP_NUMERICS_HPP
 

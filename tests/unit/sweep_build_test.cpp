@@ -19,6 +19,9 @@
 //   sweep-build-10 the progress line: done/total, rate, ETA, failures
 //   sweep-build-11 the numerics fingerprint (sweep/numerics.hpp): 16 hex digits, the same
 //                  from any thread; an MPI rank with another one is refused by name
+//   sweep-build-12 a database records the fingerprint of its first build; a build that
+//                  would compute cases with another one is refused untouched, one with
+//                  nothing to compute is not
 #include <sqlite3.h>
 #include <sys/file.h>
 #include <fcntl.h>
@@ -373,6 +376,28 @@ TEST(SweepBuild, NumericsFingerprintNamesAMismatchingRank) {  // sweep-build-11
   EXPECT_NE(refusal.find("MPI rank 3"), std::string::npos) << refusal;
   EXPECT_NE(refusal.find(here), std::string::npos) << refusal;
   EXPECT_NE(refusal.find("0123456789abcdef"), std::string::npos) << refusal;
+}
+
+TEST(SweepBuild, DatabaseKeepsOneNumericsFingerprint) {  // sweep-build-12
+  Fixture f;
+  const fs::path db = f.dir / "numerics.db";
+  f.build(db, 1, make_test_runner());
+  {
+    store::Database d = store::Database::open(db, store::Database::Mode::kReadOnly);
+    store::Statement st = d.prepare("SELECT value FROM meta WHERE key = 'numerics_fingerprint'");
+    ASSERT_TRUE(st.step());
+    EXPECT_EQ(st.column_text(0), sweep::numerics_fingerprint());
+  }
+  // As if another machine kind had computed the database.
+  {
+    store::Database d = store::Database::open(db, store::Database::Mode::kCreate);
+    d.exec("UPDATE meta SET value = '0123456789abcdef' WHERE key = 'numerics_fingerprint'");
+  }
+  const sweep::BuildSummary nothing_to_do = f.build(db, 1, make_test_runner());
+  EXPECT_EQ(nothing_to_do.scheduled, 0);
+  sweep::BuildOptions v2;
+  v2.code_version = "99.0.0-test";  // every case would be recomputed here
+  expect_refused(f, db, "numerics_fingerprint = 0123456789abcdef", v2);
 }
 }  // namespace
 }  // namespace towdb::test
