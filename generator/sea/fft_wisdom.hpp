@@ -10,11 +10,13 @@
 // computed them. So the patient plan is made once, offline, and stored here
 // as FFTW wisdom; DaySynthesizer asks FFTW for that plan only
 // (FFTW_WISDOM_ONLY) and falls back to FFTW_ESTIMATE when FFTW refuses it:
-// another FFTW version (the text names 3.3.10), or a processor without the
-// AVX codelets it names. Results are then bit-identical between all
-// processes on machines that take the stored plan, and between all processes
-// on machines that do not; the two kinds differ in the last bits
-// (`towdb simulate --json` reports which: record.fft_plan).
+// another FFTW version or build (the text's first line names FFTW 3.3.10 and
+// a signature of the set of solvers it was built with), or a processor
+// without the AVX codelets it names. Results are then bit-identical between
+// all processes on machines that take the stored plan. Where FFTW refuses it,
+// FFTW_ESTIMATE's plan is used, which itself depends on the processor's
+// SIMD codelets (`towdb simulate --json` reports which plan: record.fft_plan;
+// sweep/numerics.hpp guards databases against mixing machine kinds).
 //
 // Regenerate (after an FFTW upgrade, or for another record length; a few
 // minutes): build, then

@@ -18,7 +18,7 @@
 //               with the forcing of the middle; steps whose ends lie far
 //               below the running maximum are skipped (kPeakGateFraction).
 //               Sampling tau only at the steps would read a peak of
-//               frequency w low by up to 1 - cos(w h / 2) (1.2 % at
+//               frequency w low by up to 1 - cos(w h / 2) (3.1 % at
 //               w = 0.5 rad/s, h = 1 s). Measured on 100 days of the T-ATF /
 //               FFG 7 case of thesis Fig. 6-1 (2,000 ft wire, following
 //               seas): the daily-maximum mean at h = 1 s was 1.3 % below
@@ -484,8 +484,9 @@ struct SurgeKernel {
     return std::min(options.max_substeps, static_cast<int>(std::ceil(rate * dt / options.max_omega_h)));
   }
 
-  // Statistics at every substep start (the k1 evaluation), so snap-load peaks
-  // between forcing samples count; each point stands for h. tau at the
+  // Statistics at every substep start (where k1 applies: carried over from
+  // the previous step's end), so snap-load troughs between forcing samples
+  // count; each point stands for h. tau at the
   // interval's first substep is tau at forcing sample `sample_index`. (The
   // maximum is taken over each step by step_peak instead.)
   TOWDB_SURGE_INLINE void record(DayStatistics& stats, bool& was_slack, double tau, double h, bool first_substep,

@@ -7,6 +7,7 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <system_error>
 #include <utility>
 
 #include <fcntl.h>
@@ -366,8 +367,21 @@ constexpr const char* kNumericsKey = "numerics_fingerprint";
 // refused before anything is written (its results would differ in the last
 // bits from what the first machine computes). A build with nothing to compute
 // is not refused. Databases written before version 0.2.0 record none.
-void check_numerics(store::Database& db, const std::filesystem::path& path, const std::vector<CaseKeys>& keys,
-                    bool retry_failed, const std::string& fingerprint) {
+// Reads through a read-only connection: opening for writing would already
+// switch a DELETE-journal file (such as the bundled database) to WAL.
+void check_numerics(const std::filesystem::path& path, const std::vector<CaseKeys>& keys, bool retry_failed,
+                    const std::string& fingerprint) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) == 0 || ec) return;
+  std::optional<store::Database> opened;
+  try {
+    opened.emplace(store::Database::open(path, store::Database::Mode::kReadOnly));
+  } catch (const InputError&) {
+    // Not readable as a current towdb database (an older schema, or not a
+    // towdb file): the writable open that follows migrates it or says why.
+    return;
+  }
+  store::Database& db = *opened;
   store::Statement stored_st = db.prepare("SELECT value FROM meta WHERE key = ?");
   stored_st.bind(1, kNumericsKey);
   if (!stored_st.step()) return;
@@ -471,9 +485,9 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
   std::vector<std::size_t> work;
   try {
     lock.emplace(db_path);
+    check_numerics(db_path, keys, options.retry_failed, numerics_fingerprint());
     db.emplace(store::Database::open(db_path, store::Database::Mode::kCreate));
     writer.emplace(*db);
-    check_numerics(*db, db_path, keys, options.retry_failed, numerics_fingerprint());
     const std::vector<std::int64_t> unfinished = writer->unfinished_builds();
     if (!unfinished.empty()) {
       if (!options.resume) {

@@ -388,16 +388,24 @@ TEST(SweepBuild, DatabaseKeepsOneNumericsFingerprint) {  // sweep-build-12
     ASSERT_TRUE(st.step());
     EXPECT_EQ(st.column_text(0), sweep::numerics_fingerprint());
   }
-  // As if another machine kind had computed the database.
+  // As if another machine kind had computed the database, stored with a
+  // rollback journal like the bundled one (a writable open would switch it to
+  // WAL: the refusal must come first).
   {
-    store::Database d = store::Database::open(db, store::Database::Mode::kCreate);
-    d.exec("UPDATE meta SET value = '0123456789abcdef' WHERE key = 'numerics_fingerprint'");
+    sqlite3* raw = nullptr;
+    ASSERT_EQ(sqlite3_open(db.c_str(), &raw), SQLITE_OK);
+    EXPECT_EQ(sqlite3_exec(raw,
+                           "UPDATE meta SET value = '0123456789abcdef' WHERE key = 'numerics_fingerprint';"
+                           "PRAGMA journal_mode = DELETE;",
+                           nullptr, nullptr, nullptr),
+              SQLITE_OK);
+    sqlite3_close(raw);
   }
-  const sweep::BuildSummary nothing_to_do = f.build(db, 1, make_test_runner());
-  EXPECT_EQ(nothing_to_do.scheduled, 0);
   sweep::BuildOptions v2;
   v2.code_version = "99.0.0-test";  // every case would be recomputed here
   expect_refused(f, db, "numerics_fingerprint = 0123456789abcdef", v2);
+  const sweep::BuildSummary nothing_to_do = f.build(db, 1, make_test_runner());
+  EXPECT_EQ(nothing_to_do.scheduled, 0);
 }
 }  // namespace
 }  // namespace towdb::test
