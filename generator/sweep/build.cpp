@@ -362,15 +362,23 @@ void run_worker(const io::ShipCatalog& catalog, const CaseRunner& runner, int ra
 // computed the database's cases (numerics.hpp).
 constexpr const char* kNumericsKey = "numerics_fingerprint";
 
-// One database, one numerics fingerprint: a build that would compute a case
-// on a machine whose fingerprint differs from the one the database records is
-// refused before anything is written (its results would differ in the last
-// bits from what the first machine computes). A build with nothing to compute
-// is not refused. Databases written before version 0.2.0 record none.
-// Reads through a read-only connection: opening for writing would already
-// switch a DELETE-journal file (such as the bundled database) to WAL.
-void check_numerics(const std::filesystem::path& path, const std::vector<CaseKeys>& keys, bool retry_failed,
-                    const std::string& fingerprint) {
+std::string unfinished_build_refusal(const std::filesystem::path& path, std::int64_t build_id) {
+  return path.string() + ": build " + std::to_string(build_id) +
+         " did not finish (killed or crashed); run again with --resume to continue it (done cases "
+         "are kept, unfinished ones are recomputed)";
+}
+
+// The refusals that need the database's contents, made through a read-only
+// connection before the writable open (which would already switch a
+// DELETE-journal file, such as the bundled database, to WAL):
+//   - an unfinished build without --resume;
+//   - one database, one numerics fingerprint: a build that would compute a
+//     case on a machine whose fingerprint differs from the one the database
+//     records (its results would differ in the last bits from what the first
+//     machine computes). A build with nothing to compute is not refused.
+//     Databases written before version 0.2.0 record none.
+void check_before_writing(const std::filesystem::path& path, const std::vector<CaseKeys>& keys, bool resume,
+                          bool retry_failed, const std::string& fingerprint) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) == 0 || ec) return;
   std::optional<store::Database> opened;
@@ -382,6 +390,12 @@ void check_numerics(const std::filesystem::path& path, const std::vector<CaseKey
     return;
   }
   store::Database& db = *opened;
+  if (!resume) {
+    store::Statement running = db.prepare("SELECT max(build_id) FROM builds WHERE status = 'running'");
+    if (running.step() && !running.is_null(0)) {
+      throw InputError(unfinished_build_refusal(path, running.column_int(0)));
+    }
+  }
   store::Statement stored_st = db.prepare("SELECT value FROM meta WHERE key = ?");
   stored_st.bind(1, kNumericsKey);
   if (!stored_st.step()) return;
@@ -485,15 +499,13 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
   std::vector<std::size_t> work;
   try {
     lock.emplace(db_path);
-    check_numerics(db_path, keys, options.retry_failed, numerics_fingerprint());
+    check_before_writing(db_path, keys, options.resume, options.retry_failed, numerics_fingerprint());
     db.emplace(store::Database::open(db_path, store::Database::Mode::kCreate));
     writer.emplace(*db);
     const std::vector<std::int64_t> unfinished = writer->unfinished_builds();
     if (!unfinished.empty()) {
       if (!options.resume) {
-        throw InputError(db_path.string() + ": build " + std::to_string(unfinished.back()) +
-                         " did not finish (killed or crashed); run again with --resume to continue it (done cases "
-                         "are kept, unfinished ones are recomputed)");
+        throw InputError(unfinished_build_refusal(db_path, unfinished.back()));
       }
       writer->mark_interrupted(unfinished);
     }

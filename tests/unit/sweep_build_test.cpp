@@ -276,13 +276,15 @@ TEST(SweepBuild, BadDatabasesAreRefusedUntouched) {  // sweep-build-6
   }
   EXPECT_EQ(dump_database(good, {}), reference);
 
-  {  // a build that never finished (as after kill -9)
+  {  // a build that never finished (as after kill -9), in a rollback-journal file
     sqlite3* raw = nullptr;
     sqlite3_open(good.c_str(), &raw);
-    sqlite3_exec(raw, "UPDATE builds SET status = 'running', finished_utc = NULL", nullptr, nullptr, nullptr);
+    sqlite3_exec(raw, "UPDATE builds SET status = 'running', finished_utc = NULL; PRAGMA journal_mode = DELETE;",
+                 nullptr, nullptr, nullptr);
     sqlite3_close(raw);
   }
   const std::string unfinished = dump_database(good, {});
+  const std::string unfinished_bytes = test::read_text(good);
   sweep::BuildOptions v3;
   v3.code_version = "99.0.0-test";
   try {
@@ -294,6 +296,7 @@ TEST(SweepBuild, BadDatabasesAreRefusedUntouched) {  // sweep-build-6
         << e.what();
   }
   EXPECT_EQ(dump_database(good, {}), unfinished);
+  EXPECT_EQ(test::read_text(good), unfinished_bytes) << "the file was changed";
 }
 
 TEST(SweepBuild, ConcurrentBuildIsRefused) {  // sweep-build-7
