@@ -18,6 +18,7 @@
 #include "common/parallel_for.hpp"
 #include "output.hpp"
 #include "sweep/calibration.hpp"
+#include "sweep/numerics.hpp"
 #include "sweep/simulation_runner.hpp"
 #include "sweep/sweep.hpp"
 
@@ -103,12 +104,20 @@ int run_dry(const Context& ctx, const BuildArgs& a, const sweep::SweepFile& file
     ++by_state[sweep::to_string(p.state)];
     if (p.state != sweep::CaseState::kDone && p.state != sweep::CaseState::kFailed) ++to_compute;
   }
+  // Whether a build here would be refused for computing with another machine
+  // kind's numerics than the database's (sweep/numerics.hpp).
+  const std::optional<std::string> recorded = db ? sweep::recorded_numerics_fingerprint(*db) : std::nullopt;
+  const std::string here = sweep::numerics_fingerprint();
+  const bool numerics_refusal = recorded && *recorded != here && to_compute > 0;
   if (a.json) {
     ordered_json j;
     j["sweep_file"] = file.path;
     j["cases"] = plan.size();
     j["to_compute"] = to_compute;
     j["by_state"] = by_state;
+    j["numerics_fingerprint"] = {{"database", recorded ? ordered_json(*recorded) : ordered_json(nullptr)},
+                                 {"this_machine", here},
+                                 {"build_refused", numerics_refusal}};
     j["case_list"] = ordered_json::array();
     for (const auto& p : plan) j["case_list"].push_back(case_json(p));
     j["skipped_conditions"] = ordered_json::array();
@@ -140,6 +149,12 @@ int run_dry(const Context& ctx, const BuildArgs& a, const sweep::SweepFile& file
   std::cout << plan.size() << " cases (" << to_compute << " to compute";
   for (const auto& [state, count] : by_state) std::cout << ", " << count << " " << state;
   std::cout << "); " << exp.skipped.size() << " conditions skipped\n";
+  if (numerics_refusal) {
+    std::cout << "note: " << db->string() << " records numerics fingerprint " << *recorded
+              << "; this machine computes with " << here
+              << ": a build here would be refused (run it on the machine kind that made the database, or into a "
+                 "new database)\n";
+  }
   return 0;
 }
 

@@ -362,6 +362,27 @@ void run_worker(const io::ShipCatalog& catalog, const CaseRunner& runner, int ra
 // computed the database's cases (numerics.hpp).
 constexpr const char* kNumericsKey = "numerics_fingerprint";
 
+// An existing, current towdb database opened read-only; none for a missing or
+// empty file, or one that is not readable as a current towdb database (an
+// older schema, or not a towdb file: the writable open that a build makes
+// next migrates it or says why).
+std::optional<store::Database> open_for_checks(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) == 0 || ec) return {};
+  try {
+    return store::Database::open(path, store::Database::Mode::kReadOnly);
+  } catch (const InputError&) {
+    return {};
+  }
+}
+
+std::optional<std::string> recorded_numerics(store::Database& db) {
+  store::Statement st = db.prepare("SELECT value FROM meta WHERE key = ?");
+  st.bind(1, kNumericsKey);
+  if (!st.step()) return {};
+  return st.column_text(0);
+}
+
 std::string unfinished_build_refusal(const std::filesystem::path& path, std::int64_t build_id) {
   return path.string() + ": build " + std::to_string(build_id) +
          " did not finish (killed or crashed); run again with --resume to continue it (done cases "
@@ -379,16 +400,8 @@ std::string unfinished_build_refusal(const std::filesystem::path& path, std::int
 //     Databases written before version 0.2.0 record none.
 void check_before_writing(const std::filesystem::path& path, const std::vector<CaseKeys>& keys, bool resume,
                           bool retry_failed, const std::string& fingerprint) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) == 0 || ec) return;
-  std::optional<store::Database> opened;
-  try {
-    opened.emplace(store::Database::open(path, store::Database::Mode::kReadOnly));
-  } catch (const InputError&) {
-    // Not readable as a current towdb database (an older schema, or not a
-    // towdb file): the writable open that follows migrates it or says why.
-    return;
-  }
+  std::optional<store::Database> opened = open_for_checks(path);
+  if (!opened) return;
   store::Database& db = *opened;
   if (!resume) {
     store::Statement running = db.prepare("SELECT max(build_id) FROM builds WHERE status = 'running'");
@@ -396,11 +409,9 @@ void check_before_writing(const std::filesystem::path& path, const std::vector<C
       throw InputError(unfinished_build_refusal(path, running.column_int(0)));
     }
   }
-  store::Statement stored_st = db.prepare("SELECT value FROM meta WHERE key = ?");
-  stored_st.bind(1, kNumericsKey);
-  if (!stored_st.step()) return;
-  const std::string stored = stored_st.column_text(0);
-  if (stored == fingerprint) return;
+  const std::optional<std::string> recorded = recorded_numerics(db);
+  if (!recorded || *recorded == fingerprint) return;
+  const std::string& stored = *recorded;
   store::Statement by_key = db.prepare("SELECT status FROM cases WHERE case_key = ?");
   for (const CaseKeys& k : keys) {
     by_key.bind(1, k.case_key);
@@ -416,6 +427,12 @@ void check_before_writing(const std::filesystem::path& path, const std::vector<C
 }
 
 }  // namespace
+
+std::optional<std::string> recorded_numerics_fingerprint(const std::filesystem::path& db_path) {
+  std::optional<store::Database> db = open_for_checks(db_path);
+  if (!db) return {};
+  return recorded_numerics(*db);
+}
 
 void BuildOptions::validate() const {
   require_input(threads >= 1 && threads <= kMaxThreads, "BuildOptions.threads", threads,

@@ -76,6 +76,11 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
                        const std::vector<CaseSpec>& cases, const io::ShipCatalog& catalog, const CaseRunner& runner,
                        const BuildOptions& options);
 
+// The numerics fingerprint (numerics.hpp) a database records in meta: that of
+// its first build. None for a missing or empty file, a database written
+// before version 0.2.0, or one not readable as a current towdb database.
+std::optional<std::string> recorded_numerics_fingerprint(const std::filesystem::path& db_path);
+
 // The dry run: every case with its keys and what a build would do with it
 // ("new", "changed", "unfinished", "failed", "done"). Reads the database
 // when it exists (never writes; nothing is created).

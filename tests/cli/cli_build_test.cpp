@@ -9,6 +9,9 @@
 //   cli-build-5  sweep calibration reproduces the committed db/sweeps/appendix_c_calibration.toml
 //   cli-build-6  mean-tension: components add up (EQ-SWEEP-1), margin 0.25 / 0.10 scales the hull,
 //                free propeller = half locked, thesis eq. 2.9 direction correction of the sea term
+//   cli-build-7  a database made on another machine kind (meta.numerics_fingerprint): the dry run
+//                says a build would be refused (text, JSON); the build exits 2 naming both
+//                fingerprints, the file's bytes unchanged; with nothing to compute, no refusal
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -18,7 +21,9 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <sqlite3.h>
 
+#include "sweep/numerics.hpp"
 #include "sweep/sweep.hpp"
 #include "sweep_test_runner.hpp"
 #include "test_support.hpp"
@@ -318,5 +323,44 @@ TEST(CliBuild, MeanTensionBreakdown) {  // cli-build-6
   EXPECT_NE(unknown.err.find("Titanic"), std::string::npos) << unknown.err;
 }
 
+
+TEST(CliBuild, DatabaseOfAnotherMachineKindIsNotExtended) {  // cli-build-7
+  const fs::path dir = make_temp_dir("towdb-cli-build-numerics");
+  const fs::path db = dir / "other.sqlite";
+  fs::copy_file(source_dir() / "db" / "towdb.sqlite", db);
+  {
+    sqlite3* raw = nullptr;
+    ASSERT_EQ(sqlite3_open(db.c_str(), &raw), SQLITE_OK);
+    EXPECT_EQ(sqlite3_exec(raw, "UPDATE meta SET value = '0123456789abcdef' WHERE key = 'numerics_fingerprint'",
+                           nullptr, nullptr, nullptr),
+              SQLITE_OK);
+    sqlite3_close(raw);
+  }
+  const std::string before = read_text(db);
+  const std::string extra = "--sweep db/sweeps/thesis_table_5_3_extra_headings.toml --db '" + db.string() + "'";
+
+  const CommandResult dry = run_towdb("build " + extra + " --dry-run");
+  ASSERT_EQ(dry.exit_code, 0) << dry.err;
+  EXPECT_NE(last_line(dry.out).find("records numerics fingerprint 0123456789abcdef"), std::string::npos) << dry.out;
+  EXPECT_NE(last_line(dry.out).find("a build here would be refused"), std::string::npos) << dry.out;
+  const CommandResult json = run_towdb("build " + extra + " --dry-run --json");
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const auto doc = nlohmann::json::parse(json.out);
+  EXPECT_EQ(doc.at("numerics_fingerprint").at("database").get<std::string>(), "0123456789abcdef");
+  EXPECT_TRUE(doc.at("numerics_fingerprint").at("build_refused").get<bool>());
+
+  const CommandResult build = run_towdb("build " + extra + " --threads 1");
+  EXPECT_EQ(build.exit_code, 2);
+  EXPECT_NE(build.err.find("meta.numerics_fingerprint = 0123456789abcdef"), std::string::npos) << build.err;
+  EXPECT_NE(build.err.find(sweep::numerics_fingerprint()), std::string::npos) << build.err;  // this machine's
+  EXPECT_EQ(read_text(db), before) << "the file was changed";
+
+  // Every case of the bundled sweep is done: nothing to compute, nothing refused.
+  const CommandResult same =
+      run_towdb("build --sweep db/sweeps/bundled.toml --db '" + db.string() + "' --dry-run --json");
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_FALSE(nlohmann::json::parse(same.out).at("numerics_fingerprint").at("build_refused").get<bool>());
+  fs::remove_all(dir);
+}
 }  // namespace
 }  // namespace towdb::test
