@@ -539,6 +539,18 @@ struct SurgeKernel {
     return lanes::negate(lanes::max(tau0, tau1) < max_tau - kPeakGateFraction * (max_tau + mean));
   }
 
+  // The running maximum after a step (EQ-SURGE-5): raised to step_peak where
+  // peak_gate holds; step_peak is evaluated only when some lane needs it.
+  template <typename T>
+  TOWDB_SURGE_INLINE void raise_max(T& max_tau, const StateOf<T>& y0, const StateOf<T>& f0, T tau0,
+                                    const StateOf<T>& y1, const StateOf<T>& f1, T tau1, const ForcingOf<T>& gm,
+                                    double h) const {
+    const auto gate = peak_gate(tau0, tau1, max_tau);
+    if (lanes::any(gate)) {
+      max_tau = lanes::select(gate, lanes::max(max_tau, step_peak(y0, f0, tau0, y1, f1, tau1, gm, h)), max_tau);
+    }
+  }
+
   template <typename T>
   TOWDB_SURGE_INLINE static void advance(StateOf<T>& y, double h, const StateOf<T>& k1, const StateOf<T>& k2,
                                          const StateOf<T>& k3, const StateOf<T>& k4) {
@@ -570,9 +582,7 @@ struct SurgeKernel {
       advance(y, h, k1, k2, k3, k4);
       double tau1 = 0.0;
       const State f1 = derivative(y, gb, &tau1);
-      if (recording && peak_gate(tau, tau1, stats.max_tension_n)) {
-        stats.max_tension_n = std::max(stats.max_tension_n, step_peak(y0, k1, tau, y, f1, tau1, gm, h));
-      }
+      if (recording) raise_max(stats.max_tension_n, y0, k1, tau, y, f1, tau1, gm, h);
       k1 = f1;
       tau = tau1;
     }
@@ -628,6 +638,11 @@ struct LaneStatistics {
     }
   }
 };
+
+template <std::size_t K>
+TOWDB_SURGE_INLINE State lane(const StateOf<lanes::Lanes<K>>& v, std::size_t l) {
+  return {v.x1[l], v.v1[l], v.x7[l], v.v7[l]};
+}
 
 template <std::size_t K>
 TOWDB_SURGE_INLINE void set_lane(StateOf<lanes::Lanes<K>>& v, std::size_t l, const State& s) {
@@ -750,13 +765,7 @@ std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const Lock
       const StateOf<V> y0 = y;
       detail::SurgeKernel<TensionLaw>::advance(y, dt, k1, k2, k3, k4);
       const StateOf<V> f1 = kernel.derivative(y, gb, &tau1);
-      if (recording) {
-        const lanes::LaneMask<K> gate = kernel.peak_gate(tau, tau1, stats.max_tension);
-        if (lanes::any(gate)) {
-          const V peak = kernel.step_peak(y0, k1, tau, y, f1, tau1, gm, dt);
-          stats.max_tension = lanes::select(gate, lanes::max(stats.max_tension, peak), stats.max_tension);
-        }
-      }
+      if (recording) kernel.raise_max(stats.max_tension, y0, k1, tau, y, f1, tau1, gm, dt);
       k1 = f1;
       tau = tau1;
       for (std::size_t l = 0; l < K; ++l) ++stats.substeps[l];
@@ -764,8 +773,8 @@ std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const Lock
       // Some day needs substeps: each day takes its own, with the scalar code.
       for (std::size_t l = 0; l < K; ++l) {
         const detail::Records<K> r = detail::records_of(f, l);
-        State yl{y.x1[l], y.v1[l], y.x7[l], y.v7[l]};
-        State kl{k1.x1[l], k1.v1[l], k1.x7[l], k1.v7[l]};
+        State yl = detail::lane(y, l);
+        State kl = detail::lane(k1, l);
         double taul = tau[l];
         DayStatistics sl;
         bool was_slack = false;
