@@ -102,7 +102,7 @@ int run_dry(const Context& ctx, const BuildArgs& a, const sweep::SweepFile& file
   int to_compute = 0;
   for (const auto& p : plan) {
     ++by_state[sweep::to_string(p.state)];
-    if (p.state != sweep::CaseState::kDone && p.state != sweep::CaseState::kFailed) ++to_compute;
+    if (sweep::computes(p.state, false)) ++to_compute;
   }
   // Whether a build here would be refused for computing with another machine
   // kind's numerics than the database's (sweep/numerics.hpp).

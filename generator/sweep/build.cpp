@@ -415,9 +415,9 @@ void check_before_writing(const std::filesystem::path& path, const std::vector<C
   store::Statement by_key = db.prepare("SELECT status FROM cases WHERE case_key = ?");
   for (const CaseKeys& k : keys) {
     by_key.bind(1, k.case_key);
-    const std::string status = by_key.step() ? by_key.column_text(0) : "";
+    const CaseState state = by_key.step() ? state_of_stored(by_key.column_text(0)) : CaseState::kNew;
     by_key.reset();
-    if (status == "done" || (status == "failed" && !retry_failed)) continue;
+    if (!computes(state, retry_failed)) continue;
     throw InputError(path.string() + ": meta." + kNumericsKey + " = " + stored +
                      ", but this machine computes with numerics fingerprint " + fingerprint +
                      " (towdb --version; another FFT plan or math library): its cases would differ in the last "
@@ -464,8 +464,7 @@ std::vector<PlannedCase> plan_build(const std::optional<std::filesystem::path>& 
   for (PlannedCase& p : plan) {
     by_key.bind(1, p.keys.case_key);
     if (by_key.step()) {
-      const std::string status = by_key.column_text(0);
-      p.state = status == "done" ? CaseState::kDone : status == "failed" ? CaseState::kFailed : CaseState::kUnfinished;
+      p.state = state_of_stored(by_key.column_text(0));
     } else {
       by_condition.bind(1, p.spec.condition_key);
       if (by_condition.step()) p.state = CaseState::kChanged;
@@ -546,16 +545,13 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
     registered = writer->register_cases(cases, keys, catalog, summary.build_id, options.retry_failed);
     summary.total = static_cast<int>(cases.size());
     for (std::size_t i = 0; i < cases.size(); ++i) {
-      switch (registered[i].state) {
-        case CaseState::kDone: ++summary.up_to_date; break;
-        case CaseState::kFailed:
-          if (options.retry_failed) {
-            work.push_back(i);
-          } else {
-            ++summary.previously_failed;
-          }
-          break;
-        default: work.push_back(i); break;
+      const CaseState state = registered[i].state;
+      if (computes(state, options.retry_failed)) {
+        work.push_back(i);
+      } else if (state == CaseState::kDone) {
+        ++summary.up_to_date;
+      } else {
+        ++summary.previously_failed;
       }
     }
     summary.scheduled = static_cast<int>(work.size());

@@ -3,12 +3,12 @@
 #include <cmath>
 #include <complex>
 #include <cstring>
-#include <string_view>
 #include <vector>
 
 #include "io/ship_file.hpp"
 #include "sea/record.hpp"
 #include "sea/spectrum.hpp"
+#include "simulation/case_runner.hpp"
 
 namespace towdb::sweep {
 namespace {
@@ -21,12 +21,10 @@ void append_bits(std::string& bytes, double x) {
 
 std::string compute_fingerprint() {
   std::string bytes;
-  // The simulation's day: 86,400 samples at 1 s (simulation::CaseOptions),
-  // unit transfer function, a 20 kt Pierson-Moskowitz sea met at 9 kt.
-  sea::RecordOptions options;
-  options.encounter_cutoff_rad_s = 3.0;
-  options.max_time_step_s = 1.0;
-  const sea::RecordPlan plan(sea::single_system(sea::Spectrum::pierson_moskowitz(10.29), 2.0), 4.63, options);
+  // The simulation's day (simulation::CaseOptions's record: 86,400 samples at
+  // 1 s), unit transfer function, a 20 kt Pierson-Moskowitz sea met at 9 kt.
+  const sea::RecordPlan plan(sea::single_system(sea::Spectrum::pierson_moskowitz(10.29), 2.0), 4.63,
+                             simulation::CaseOptions{}.record);
   const std::vector<std::complex<double>> unit(plan.components().size(), 1.0);
   const sea::DaySynthesizer synthesizer(plan, {unit}, {});
   auto workspace = synthesizer.make_workspace();

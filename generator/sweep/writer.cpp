@@ -94,6 +94,16 @@ const char* to_string(CaseState state) {
   return "?";
 }
 
+CaseState state_of_stored(std::string_view status) {
+  if (status == "done") return CaseState::kDone;
+  if (status == "failed") return CaseState::kFailed;
+  return CaseState::kUnfinished;
+}
+
+bool computes(CaseState state, bool retry_failed) {
+  return state == CaseState::kFailed ? retry_failed : state != CaseState::kDone;
+}
+
 std::vector<std::int64_t> DatabaseWriter::unfinished_builds() {
   std::vector<std::int64_t> ids;
   store::Statement st = db_.prepare("SELECT build_id FROM builds WHERE status = 'running' ORDER BY build_id");
@@ -230,16 +240,8 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
         const std::string status = by_key.column_text(1);
         by_key.reset();
         out[i].case_id = id;
-        if (status == "done") {
-          out[i].state = CaseState::kDone;
-        } else if (status == "failed") {
-          out[i].state = CaseState::kFailed;
-          if (retry_failed) {
-            to_pending.bind(1, build_id).bind(2, now).bind(3, id);
-            to_pending.run();
-          }
-        } else {
-          out[i].state = CaseState::kUnfinished;
+        out[i].state = state_of_stored(status);
+        if (computes(out[i].state, retry_failed)) {
           to_pending.bind(1, build_id).bind(2, now).bind(3, id);
           to_pending.run();
         }

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/ship_file.hpp"
@@ -40,6 +41,12 @@ enum class CaseState {
   kDone,       // up to date: skipped
 };
 const char* to_string(CaseState state);
+// The state of a case the database already holds, from its cases.status
+// ('done', 'failed'; 'pending' or 'running' are unfinished).
+CaseState state_of_stored(std::string_view status);
+// Whether a build computes a case in this state (the one rule for builds,
+// their dry runs and the checks made before writing).
+bool computes(CaseState state, bool retry_failed);
 
 struct RegisteredCase {
   std::int64_t case_id = 0;
