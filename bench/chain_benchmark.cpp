@@ -119,8 +119,14 @@ void BM_DayIntegration(benchmark::State& state) {
 BENCHMARK(BM_DayIntegration)->Unit(benchmark::kMillisecond);
 
 // What run_case does: kLockstepDays days integrated together; the time is per
-// group, items/s counts days.
+// group, items/s counts days. Argument: the vectors (0 = baseline SSE2,
+// 1 = AVX2; skipped where the processor lacks AVX2).
 void BM_DayIntegrationLockStep(benchmark::State& state) {
+  const auto isa = state.range(0) == 0 ? simulation::LaneIsa::kBaseline : simulation::LaneIsa::kAvx2;
+  if (isa != simulation::LaneIsa::kBaseline && simulation::fastest_lane_isa() != isa) {
+    state.SkipWithError("this processor lacks AVX2");
+    return;
+  }
   const auto m = prepared();
   simulation::LockstepForcing<simulation::kLockstepDays> days;
   for (std::size_t l = 0; l < simulation::kLockstepDays; ++l) {
@@ -131,13 +137,14 @@ void BM_DayIntegrationLockStep(benchmark::State& state) {
   }
   double max_kips = 0.0;
   for (auto _ : state) {
-    const auto s = simulation::simulate_days(*m, days, simulation::IntegratorOptions{});
+    const auto s = simulation::simulate_days(*m, days, simulation::IntegratorOptions{}, isa);
     max_kips = units::n_to_kips(s[0].max_tension_n);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(simulation::kLockstepDays));
   state.counters["max_kips_day0"] = max_kips;
+  state.SetLabel(simulation::lane_isa_name(isa));
 }
-BENCHMARK(BM_DayIntegrationLockStep)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DayIntegrationLockStep)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_GumbelFit500(benchmark::State& state) {
   std::vector<double> x;

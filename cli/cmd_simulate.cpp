@@ -206,6 +206,7 @@ int run_simulate(const Context& ctx, const SimulateArgs& a) {
                    {"wave_components", r.wave_components},
                    {"retained_variance_fraction", r.retained_variance_fraction},
                    {"fft_plan", r.fft_plan_from_stored_wisdom ? "stored wisdom" : "estimate"}};
+    j["integrator_vectors"] = simulation::lane_isa_name(r.lane_isa);  // no effect on any number
     j["runtime_s"] = r.timings.total_s;
     j["timings_s"] = {{"towline", r.timings.towline_s},
                       {"hydrodynamics", r.timings.hydrodynamics_s},

@@ -493,8 +493,10 @@ DayStatistics simulate_day(const CaseModel& m, const DayForcing& forcing, const 
 
 std::array<DayStatistics, kLockstepDays> simulate_days(const CaseModel& m,
                                                       const LockstepForcing<kLockstepDays>& forcing,
-                                                      const IntegratorOptions& options) {
-  return with_tension_law(m, [&](const auto& law) { return integrate_days(m.surge, forcing, law, options); });
+                                                      const IntegratorOptions& options, LaneIsa isa) {
+  static_assert(kLockstepDays == 4, "integrate_days_fastest integrates four days");
+  return with_tension_law(
+      m, [&](const auto& law) { return integrate_days_fastest(m.surge, forcing, law, options, {}, isa); });
 }
 
 double linear_tension_variance_n2(const CaseInputs& inputs, const CaseOptions& options) {
@@ -536,6 +538,7 @@ CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options) {
   // equations integrated in lock step (integrate_days): the grouping depends
   // only on the day numbers, and a day's result not even on its group. A last,
   // partial group repeats its first day in the unused lanes (results dropped).
+  r.lane_isa = fastest_lane_isa();
   std::vector<std::unique_ptr<GroupScratch>> scratch(static_cast<std::size_t>(workers(options.num_threads)));
   const int groups = (days + static_cast<int>(kLockstepDays) - 1) / static_cast<int>(kLockstepDays);
   parallel_for_workers(0, groups, options.num_threads, [&](std::int64_t g, int worker) {
@@ -550,7 +553,7 @@ CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options) {
     }
     for (std::size_t l = count; l < kLockstepDays; ++l) s->forcing.copy_lane(0, l);
     const auto t = Clock::now();
-    const std::array<DayStatistics, kLockstepDays> st = simulate_days(*m, s->forcing, options.integrator);
+    const std::array<DayStatistics, kLockstepDays> st = simulate_days(*m, s->forcing, options.integrator, r.lane_isa);
     const double integration_s = seconds_since(t) / static_cast<double>(count);
     for (std::size_t l = 0; l < count; ++l) {
       const std::size_t i = first + l;

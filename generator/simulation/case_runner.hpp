@@ -160,6 +160,7 @@ struct CaseResult {
   std::size_t wave_components = 0;
   double retained_variance_fraction = 0.0;
   bool fft_plan_from_stored_wisdom = false;  // sea/fft_wisdom.hpp; false: FFTW_ESTIMATE's plan
+  LaneIsa lane_isa = LaneIsa::kBaseline;      // vectors of the lock-step integration (same results for any)
   std::vector<DayResult> days;
   CaseStatistics statistics;
   double slack_fraction = 0.0;
@@ -201,16 +202,20 @@ DayForcing day_forcing(const CaseModel& model, std::uint64_t seed, std::uint64_t
 DayStatistics simulate_day(const CaseModel& model, const DayForcing& forcing, const IntegratorOptions& options,
                            std::vector<double>* trace = nullptr);
 
-// Days run_case integrates together (surge.hpp integrate_days), as the lanes
-// of two 2-double vectors. On the 2-core CI machine (bench/): integration
-// alone costs 4.0 ms a day with 2, 2.55 with 4 and 2.35 with 8, but a 500-day
-// case is fastest with 4 (eight days' records no longer stay in cache).
+// Days run_case integrates together (surge.hpp integrate_days_fastest): one
+// 4-double AVX register where the processor has AVX2, else two 2-double
+// vectors. Measured on the 2-core CI machine with the 2-double vectors
+// (bench/): integration alone costs 4.0 ms a day with 2 days, 2.55 with 4 and
+// 2.35 with 8, but a 500-day case is fastest with 4 (eight days' records no
+// longer stay in cache).
 inline constexpr std::size_t kLockstepDays = 4;
 // kLockstepDays days of a prepared case in lock step (their records
-// interleaved); day l's statistics equal simulate_day on day l alone, bit for bit.
+// interleaved), with the vectors `isa` names; day l's statistics equal
+// simulate_day on day l alone, bit for bit, for any isa.
 std::array<DayStatistics, kLockstepDays> simulate_days(const CaseModel& model,
                                                       const LockstepForcing<kLockstepDays>& forcing,
-                                                      const IntegratorOptions& options);
+                                                      const IntegratorOptions& options,
+                                                      LaneIsa isa = fastest_lane_isa());
 
 }  // namespace towdb::simulation
 

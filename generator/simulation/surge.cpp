@@ -27,4 +27,16 @@ void IntegratorOptions::validate() const {
   require_in_range("integrator: max_substeps", max_substeps, 1, 1 << 20);
 }
 
+LaneIsa fastest_lane_isa() {
+#if defined(TOWDB_SURGE_HAVE_AVX2_PATH)
+  // libgcc's check includes the operating system's support of the AVX
+  // register state (XGETBV), not only the CPUID bit.
+  static const bool avx2 = __builtin_cpu_supports("avx2") != 0;
+  if (avx2) return LaneIsa::kAvx2;
+#endif
+  return LaneIsa::kBaseline;
+}
+
+const char* lane_isa_name(LaneIsa isa) { return isa == LaneIsa::kAvx2 ? "avx2" : "baseline"; }
+
 }  // namespace towdb::simulation

@@ -41,15 +41,23 @@
 //
 // Lock step (integrate_days): K days' records are interleaved sample by sample
 // (LockstepForcing) and the K days are the K lanes of one vector of doubles
-// (GCC vector extensions; lanes::Lanes<K>). On an interval where no day needs
-// substeps, one RK4 step advances all K days with vector operations; otherwise
-// each day takes its own substeps with the scalar code. Every lane performs
-// the IEEE operations of the scalar code in the same order (no fused
-// multiply-add: every target is built with -ffp-contract=off,
-// cmake/TowdbHelpers.cmake), so a day's results are bit-identical whichever
-// path or group it ran in. Tension laws are therefore written once, as
-// templates on the number type (double or lanes::Lanes<K>), with the lanes::
-// helpers for max, min, clamp and select.
+// (GCC vector extensions; lanes::Lanes<K, W>, K/W native vectors of W
+// doubles). On an interval where no day needs substeps, one RK4 step advances
+// all K days with vector operations; otherwise each day takes its own
+// substeps with the scalar code. Every lane performs the IEEE operations of
+// the scalar code in the same order (no fused multiply-add: every target is
+// built with -ffp-contract=off, cmake/TowdbHelpers.cmake), so a day's results
+// are bit-identical whichever path, group or vector width it ran in. Tension
+// laws are therefore written once, as templates on the number type (double
+// or lanes::Lanes<K, W>), with the lanes:: helpers for max, min, clamp and
+// select.
+//
+// Vector width: the program is built for baseline x86-64 (SSE2, W = 2). On
+// a processor with AVX2, integrate_days_fastest runs four days as one AVX
+// register (W = 4) in integrate_days_avx2, a function GCC compiles for AVX2
+// on its own (target attribute), chosen at run time (fastest_lane_isa). On
+// the CI machine this cut the integration from 10.4-10.7 to 8.7-9.1 ms per
+// four days (bench/ BM_DayIntegrationLockStep/0 and /1).
 //
 // Integrator: classical RK4. The step is the forcing interval dt, split into
 // m substeps where the local line stiffness makes the relative surge mode fast
@@ -89,48 +97,64 @@ namespace towdb::simulation {
 // so double and Lanes<K> give the same bits lane by lane.
 namespace lanes {
 
-// The baseline x86-64 vector (SSE2): two doubles, and its comparison mask.
-typedef double Half __attribute__((vector_size(16)));
-typedef std::int64_t HalfMask __attribute__((vector_size(16)));
+// Native vectors of W doubles and their comparison masks: W = 2 is the
+// baseline x86-64 vector (SSE2), W = 4 an AVX register, used only inside
+// functions compiled for AVX2 (integrate_days_avx2).
+template <std::size_t W>
+struct Native;
+template <>
+struct Native<2> {
+  typedef double Vector __attribute__((vector_size(16)));
+  typedef std::int64_t Mask __attribute__((vector_size(16)));
+  // For loads from double arrays: any alignment, aliasing doubles.
+  typedef double Unaligned __attribute__((vector_size(16), aligned(8), may_alias));
+};
+template <>
+struct Native<4> {
+  typedef double Vector __attribute__((vector_size(32)));
+  typedef std::int64_t Mask __attribute__((vector_size(32)));
+  typedef double Unaligned __attribute__((vector_size(32), aligned(8), may_alias));
+};
 
-// K doubles (K = 2, 4, 8) as K/2 native two-lane vectors: every operation
-// acts on the halves independently, so K = 4 gives the processor two
-// independent dependency chains (wider GCC vectors are lowered to slow code
-// on a baseline build, and an AVX build would need a second ABI).
-template <std::size_t K>
+// K doubles as K/W native vectors ("parts"): every operation acts on the
+// parts independently, so K = 4 on SSE2 gives the processor two independent
+// dependency chains. (GCC's generic K-double vectors are lowered to slow
+// code when the target lacks them.)
+template <std::size_t K, std::size_t W = 2>
 struct Lanes {
-  static_assert(K == 2 || K == 4 || K == 8, "lanes: 2, 4 or 8");
-  static constexpr std::size_t kHalves = K / 2;
-  Half h[kHalves];
-  double operator[](std::size_t l) const { return h[l / 2][l % 2]; }
-  void set(std::size_t l, double x) { h[l / 2][l % 2] = x; }
+  static_assert((W == 2 || W == 4) && K % W == 0 && K >= W && K <= 8, "lanes: K = 2, 4 or 8 doubles in parts of W");
+  static constexpr std::size_t kParts = K / W;
+  typedef typename Native<W>::Vector Part;
+  Part h[kParts];
+  double operator[](std::size_t l) const { return h[l / W][l % W]; }
+  void set(std::size_t l, double x) { h[l / W][l % W] = x; }
 };
 
 // A lane-wise comparison: -1 where it holds, 0 elsewhere (also used as counts).
-template <std::size_t K>
+template <std::size_t K, std::size_t W = 2>
 struct LaneMask {
-  HalfMask h[K / 2];
-  std::int64_t operator[](std::size_t l) const { return h[l / 2][l % 2]; }
-  void set(std::size_t l, std::int64_t x) { h[l / 2][l % 2] = x; }
+  typename Native<W>::Mask h[K / W];
+  std::int64_t operator[](std::size_t l) const { return h[l / W][l % W]; }
+  void set(std::size_t l, std::int64_t x) { h[l / W][l % W] = x; }
 };
 
 #define TOWDB_LANES_BINARY(OP, RESULT)                                                   \
-  template <std::size_t K>                                                               \
-  TOWDB_SURGE_INLINE RESULT<K> operator OP(const Lanes<K>& a, const Lanes<K>& b) {       \
-    RESULT<K> r;                                                                         \
-    for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = a.h[i] OP b.h[i];                   \
+  template <std::size_t K, std::size_t W>                                                \
+  TOWDB_SURGE_INLINE RESULT<K, W> operator OP(const Lanes<K, W>& a, const Lanes<K, W>& b) { \
+    RESULT<K, W> r;                                                                      \
+    for (std::size_t i = 0; i < K / W; ++i) r.h[i] = a.h[i] OP b.h[i];                   \
     return r;                                                                            \
   }                                                                                      \
-  template <std::size_t K>                                                               \
-  TOWDB_SURGE_INLINE RESULT<K> operator OP(const Lanes<K>& a, double b) {                \
-    RESULT<K> r;                                                                         \
-    for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = a.h[i] OP b;                        \
+  template <std::size_t K, std::size_t W>                                                \
+  TOWDB_SURGE_INLINE RESULT<K, W> operator OP(const Lanes<K, W>& a, double b) {          \
+    RESULT<K, W> r;                                                                      \
+    for (std::size_t i = 0; i < K / W; ++i) r.h[i] = a.h[i] OP b;                        \
     return r;                                                                            \
   }                                                                                      \
-  template <std::size_t K>                                                               \
-  TOWDB_SURGE_INLINE RESULT<K> operator OP(double a, const Lanes<K>& b) {                \
-    RESULT<K> r;                                                                         \
-    for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = a OP b.h[i];                        \
+  template <std::size_t K, std::size_t W>                                                \
+  TOWDB_SURGE_INLINE RESULT<K, W> operator OP(double a, const Lanes<K, W>& b) {          \
+    RESULT<K, W> r;                                                                      \
+    for (std::size_t i = 0; i < K / W; ++i) r.h[i] = a OP b.h[i];                        \
     return r;                                                                            \
   }
 TOWDB_LANES_BINARY(+, Lanes)
@@ -143,31 +167,31 @@ TOWDB_LANES_BINARY(>, LaneMask)
 TOWDB_LANES_BINARY(!=, LaneMask)
 #undef TOWDB_LANES_BINARY
 
-template <std::size_t K>
-TOWDB_SURGE_INLINE Lanes<K> operator-(const Lanes<K>& a) {
-  Lanes<K> r;
-  for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = -a.h[i];
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE Lanes<K, W> operator-(const Lanes<K, W>& a) {
+  Lanes<K, W> r;
+  for (std::size_t i = 0; i < K / W; ++i) r.h[i] = -a.h[i];
   return r;
 }
-template <std::size_t K>
-TOWDB_SURGE_INLINE Lanes<K>& operator+=(Lanes<K>& a, const Lanes<K>& b) {
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE Lanes<K, W>& operator+=(Lanes<K, W>& a, const Lanes<K, W>& b) {
   return a = a + b;
 }
-template <std::size_t K>
-TOWDB_SURGE_INLINE LaneMask<K> operator&(const LaneMask<K>& a, const LaneMask<K>& b) {
-  LaneMask<K> r;
-  for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = a.h[i] & b.h[i];
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE LaneMask<K, W> operator&(const LaneMask<K, W>& a, const LaneMask<K, W>& b) {
+  LaneMask<K, W> r;
+  for (std::size_t i = 0; i < K / W; ++i) r.h[i] = a.h[i] & b.h[i];
   return r;
 }
-template <std::size_t K>
-TOWDB_SURGE_INLINE LaneMask<K> operator~(const LaneMask<K>& a) {
-  LaneMask<K> r;
-  for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = ~a.h[i];
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE LaneMask<K, W> operator~(const LaneMask<K, W>& a) {
+  LaneMask<K, W> r;
+  for (std::size_t i = 0; i < K / W; ++i) r.h[i] = ~a.h[i];
   return r;
 }
-template <std::size_t K>
-TOWDB_SURGE_INLINE LaneMask<K>& operator-=(LaneMask<K>& a, const LaneMask<K>& b) {
-  for (std::size_t i = 0; i < K / 2; ++i) a.h[i] -= b.h[i];
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE LaneMask<K, W>& operator-=(LaneMask<K, W>& a, const LaneMask<K, W>& b) {
+  for (std::size_t i = 0; i < K / W; ++i) a.h[i] -= b.h[i];
   return a;
 }
 
@@ -180,33 +204,44 @@ TOWDB_SURGE_INLINE T splat(double x) {
   if constexpr (std::is_same_v<T, double>) {
     return x;
   } else {
+    // A vector literal (a broadcast): lane-by-lane stores read back as a
+    // vector would stall store forwarding.
+    typedef std::remove_reference_t<decltype(T{}.h[0])> Part;
     T r;
-    for (std::size_t i = 0; i < T::kHalves; ++i) r.h[i] = Half{x, x};
+    for (std::size_t i = 0; i < T::kParts; ++i) {
+      if constexpr (sizeof(Part) == 2 * sizeof(double)) {
+        r.h[i] = Part{x, x};
+      } else {
+        r.h[i] = Part{x, x, x, x};
+      }
+    }
     return r;
   }
 }
 // cond ? a : b, lane by lane.
 TOWDB_SURGE_INLINE double select(bool cond, double a, double b) { return cond ? a : b; }
-template <std::size_t K>
-TOWDB_SURGE_INLINE Lanes<K> select(const LaneMask<K>& cond, const Lanes<K>& a, const Lanes<K>& b) {
-  Lanes<K> r;
-  for (std::size_t i = 0; i < K / 2; ++i) r.h[i] = cond.h[i] ? a.h[i] : b.h[i];
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE Lanes<K, W> select(const LaneMask<K, W>& cond, const Lanes<K, W>& a, const Lanes<K, W>& b) {
+  Lanes<K, W> r;
+  for (std::size_t i = 0; i < K / W; ++i) r.h[i] = cond.h[i] ? a.h[i] : b.h[i];
   return r;
 }
 // The negation of a comparison, lane by lane.
 TOWDB_SURGE_INLINE bool negate(bool cond) { return !cond; }
-template <std::size_t K>
-TOWDB_SURGE_INLINE LaneMask<K> negate(const LaneMask<K>& cond) {
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE LaneMask<K, W> negate(const LaneMask<K, W>& cond) {
   return ~cond;
 }
 // Whether any lane of a comparison holds (the comparison itself for double):
 // lets a law skip work that no lane needs, as the scalar code's branch does.
 TOWDB_SURGE_INLINE bool any(bool cond) { return cond; }
-template <std::size_t K>
-TOWDB_SURGE_INLINE bool any(const LaneMask<K>& cond) {
-  HalfMask r = cond.h[0];
-  for (std::size_t i = 1; i < K / 2; ++i) r |= cond.h[i];
-  return (r[0] | r[1]) != 0;
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE bool any(const LaneMask<K, W>& cond) {
+  typename Native<W>::Mask r = cond.h[0];
+  for (std::size_t i = 1; i < K / W; ++i) r |= cond.h[i];
+  std::int64_t o = r[0];
+  for (std::size_t l = 1; l < W; ++l) o |= r[l];
+  return o != 0;
 }
 template <typename T>
 TOWDB_SURGE_INLINE T max(T a, T b) {  // std::max: a < b ? b : a
@@ -311,12 +346,52 @@ DayStatistics integrate_day(const SurgeParameters& p, const DayForcing& f, const
                             const IntegratorOptions& options, std::vector<double>* trace = nullptr);
 
 // K days with the same record length and step, integrated in lock step (see
-// the file comment). Day l's statistics (and trace) are bit-identical to
-// integrate_day on day l alone.
-template <typename TensionLaw, std::size_t K>
+// the file comment), as K/W vectors of W doubles: W = 2 works on every
+// x86-64 processor (SSE2); W = 4 needs AVX and is only instantiated inside
+// integrate_days_avx2. Day l's statistics (and trace) are bit-identical to
+// integrate_day on day l alone, for either W. (Forced inline, so that the
+// AVX2 wrapper compiles the whole loop for AVX2.)
+template <typename TensionLaw, std::size_t K, std::size_t W = 2>
 std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const LockstepForcing<K>& f,
                                             const TensionLaw& law, const IntegratorOptions& options,
                                             const std::array<std::vector<double>*, K>& trace = {});
+
+// The vectors integrate_days_fastest uses on this processor: kAvx2 (four
+// days in one 4-double AVX register) where the processor and the operating
+// system support AVX2, else kBaseline (two 2-double vectors).
+enum class LaneIsa { kBaseline, kAvx2 };
+LaneIsa fastest_lane_isa();
+const char* lane_isa_name(LaneIsa isa);  // "baseline", "avx2"
+
+#if defined(__GNUC__) && defined(__x86_64__)
+#define TOWDB_SURGE_HAVE_AVX2_PATH 1
+// integrate_days<TensionLaw, 4, 4>, the whole RK4 loop compiled for AVX2 by
+// GCC's target attribute on this function alone: everything else in the
+// program stays baseline code, and functions this one calls without
+// inlining keep their baseline code too. Call only when fastest_lane_isa()
+// is kAvx2. Same bits as integrate_days<TensionLaw, 4> (no fused
+// multiply-add: AVX2 does not imply FMA, and -ffp-contract=off).
+template <typename TensionLaw>
+[[gnu::target("avx2")]] std::array<DayStatistics, 4> integrate_days_avx2(
+    const SurgeParameters& p, const LockstepForcing<4>& f, const TensionLaw& law, const IntegratorOptions& options,
+    const std::array<std::vector<double>*, 4>& trace = {}) {
+  return integrate_days<TensionLaw, 4, 4>(p, f, law, options, trace);
+}
+#endif
+
+// Four days in lock step with the vectors `isa` names (by default the
+// fastest this processor has); the results do not depend on it.
+template <typename TensionLaw>
+std::array<DayStatistics, 4> integrate_days_fastest(const SurgeParameters& p, const LockstepForcing<4>& f,
+                                                    const TensionLaw& law, const IntegratorOptions& options,
+                                                    const std::array<std::vector<double>*, 4>& trace = {},
+                                                    LaneIsa isa = fastest_lane_isa()) {
+#if defined(TOWDB_SURGE_HAVE_AVX2_PATH)
+  if (isa == LaneIsa::kAvx2) return integrate_days_avx2(p, f, law, options, trace);
+#endif
+  (void)isa;
+  return integrate_days<TensionLaw, 4>(p, f, law, options, trace);
+}
 
 // ---------------------------------------------------------------------------
 // Implementation (a template: the tension law is inlined into the RK4 loop).
@@ -467,7 +542,15 @@ struct SurgeKernel {
     if constexpr (std::is_same_v<T, double>) {
       omega = std::sqrt(k_line);
     } else {
-      for (std::size_t l = 0; l < lanes::kWidth<T>; ++l) omega.set(l, std::sqrt(k_line[l]));
+      // Built from the lanes' square roots as a vector literal (see splat).
+      for (std::size_t i = 0; i < T::kParts; ++i) {
+        const auto k = k_line.h[i];
+        if constexpr (sizeof(k) == 2 * sizeof(double)) {
+          omega.h[i] = decltype(k){std::sqrt(k[0]), std::sqrt(k[1])};
+        } else {
+          omega.h[i] = decltype(k){std::sqrt(k[0]), std::sqrt(k[1]), std::sqrt(k[2]), std::sqrt(k[3])};
+        }
+      }
     }
     return lanes::max(omega, c_loc * inv_mass_line + hull_rate);
   }
@@ -592,10 +675,10 @@ struct SurgeKernel {
 
 // The lock-step statistics of K days, one lane per day (what
 // SurgeKernel::record accumulates, lane by lane).
-template <std::size_t K>
+template <std::size_t K, std::size_t W>
 struct LaneStatistics {
-  using V = lanes::Lanes<K>;
-  using Mask = lanes::LaneMask<K>;
+  using V = lanes::Lanes<K, W>;
+  using Mask = lanes::LaneMask<K, W>;
   V max_tension, min_tension, slack_time, sum, sum_sq;
   Mask snatch_events, was_slack;  // counts; masks (-1 = slack)
   std::array<long, K> substeps{}, samples{};
@@ -639,41 +722,42 @@ struct LaneStatistics {
   }
 };
 
-template <std::size_t K>
-TOWDB_SURGE_INLINE State lane(const StateOf<lanes::Lanes<K>>& v, std::size_t l) {
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE State lane(const StateOf<lanes::Lanes<K, W>>& v, std::size_t l) {
   return {v.x1[l], v.v1[l], v.x7[l], v.v7[l]};
 }
 
-template <std::size_t K>
-TOWDB_SURGE_INLINE void set_lane(StateOf<lanes::Lanes<K>>& v, std::size_t l, const State& s) {
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE void set_lane(StateOf<lanes::Lanes<K, W>>& v, std::size_t l, const State& s) {
   v.x1.set(l, s.x1);
   v.v1.set(l, s.v1);
   v.x7.set(l, s.x7);
   v.v7.set(l, s.v7);
 }
 
-template <std::size_t K>
-TOWDB_SURGE_INLINE lanes::Lanes<K> load(const std::vector<double>& r, std::size_t i) {
-  lanes::Lanes<K> v;
-  std::memcpy(&v, r.data() + i * K, sizeof v);
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE lanes::Lanes<K, W> load(const std::vector<double>& r, std::size_t i) {
+  typedef typename lanes::Native<W>::Unaligned Unaligned;
+  lanes::Lanes<K, W> v;
+  for (std::size_t j = 0; j < K / W; ++j) v.h[j] = *reinterpret_cast<const Unaligned*>(r.data() + i * K + j * W);
   return v;
 }
 
-template <std::size_t K>
-TOWDB_SURGE_INLINE ForcingOf<lanes::Lanes<K>> sample_lanes(const LockstepForcing<K>& f, std::size_t i) {
-  return {load<K>(f.tug_force_n, i), load<K>(f.tow_force_n, i), load<K>(f.xi_ns_m, i),
-          load<K>(f.xi_ns_dot_m_s, i)};
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE ForcingOf<lanes::Lanes<K, W>> sample_lanes(const LockstepForcing<K>& f, std::size_t i) {
+  return {load<K, W>(f.tug_force_n, i), load<K, W>(f.tow_force_n, i), load<K, W>(f.xi_ns_m, i),
+          load<K, W>(f.xi_ns_dot_m_s, i)};
 }
 
-template <std::size_t K>
-TOWDB_SURGE_INLINE lanes::Lanes<K> midpoint_lanes(const std::vector<double>& r, const Stencil& c) {
-  return midpoint(load<K>(r, c.im1), load<K>(r, c.i), load<K>(r, c.i1), load<K>(r, c.i2));
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE lanes::Lanes<K, W> midpoint_lanes(const std::vector<double>& r, const Stencil& c) {
+  return midpoint(load<K, W>(r, c.im1), load<K, W>(r, c.i), load<K, W>(r, c.i1), load<K, W>(r, c.i2));
 }
 
-template <std::size_t K>
-TOWDB_SURGE_INLINE ForcingOf<lanes::Lanes<K>> midpoint_lanes(const LockstepForcing<K>& f, const Stencil& c) {
-  return {midpoint_lanes<K>(f.tug_force_n, c), midpoint_lanes<K>(f.tow_force_n, c), midpoint_lanes<K>(f.xi_ns_m, c),
-          midpoint_lanes<K>(f.xi_ns_dot_m_s, c)};
+template <std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE ForcingOf<lanes::Lanes<K, W>> midpoint_lanes(const LockstepForcing<K>& f, const Stencil& c) {
+  return {midpoint_lanes<K, W>(f.tug_force_n, c), midpoint_lanes<K, W>(f.tow_force_n, c),
+          midpoint_lanes<K, W>(f.xi_ns_m, c), midpoint_lanes<K, W>(f.xi_ns_dot_m_s, c)};
 }
 
 // The steps of one periodic day of n samples: integration starts at rest
@@ -717,15 +801,15 @@ DayStatistics integrate_one(const SurgeKernel<TensionLaw>& kernel, const DayForc
 
 }  // namespace detail
 
-template <typename TensionLaw, std::size_t K>
-std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const LockstepForcing<K>& f,
-                                            const TensionLaw& law, const IntegratorOptions& options,
-                                            const std::array<std::vector<double>*, K>& trace) {
+template <typename TensionLaw, std::size_t K, std::size_t W>
+TOWDB_SURGE_INLINE std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const LockstepForcing<K>& f,
+                                                               const TensionLaw& law, const IntegratorOptions& options,
+                                                               const std::array<std::vector<double>*, K>& trace) {
   using detail::Forcing;
   using detail::ForcingOf;
   using detail::State;
   using detail::StateOf;
-  using V = lanes::Lanes<K>;
+  using V = lanes::Lanes<K, W>;
   const std::size_t n = f.size();
   const double dt = f.dt_s;
   TOWDB_ASSERT(f.tow_force_n.size() == n * K && f.xi_ns_m.size() == n * K && f.xi_ns_dot_m_s.size() == n * K);
@@ -733,7 +817,7 @@ std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const Lock
 
   const detail::DaySteps steps = detail::day_steps(options.warmup_s, dt, n);
 
-  detail::LaneStatistics<K> stats{};
+  detail::LaneStatistics<K, W> stats{};
   stats.max_tension = lanes::splat<V>(-kernel.mean);
   stats.min_tension = lanes::splat<V>(std::numeric_limits<double>::infinity());
   for (std::size_t l = 0; l < K; ++l) {
@@ -742,21 +826,21 @@ std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const Lock
   const V zero = lanes::splat<V>(0.0);
   StateOf<V> y{zero, zero, zero, zero};
   V tau;
-  StateOf<V> k1 = kernel.derivative(y, detail::sample_lanes(f, steps.start), &tau);
+  StateOf<V> k1 = kernel.derivative(y, detail::sample_lanes<K, W>(f, steps.start), &tau);
 
   std::size_t i = steps.start;
   for (std::size_t step = 0; step < steps.total; ++step) {
     const detail::Stencil c = detail::stencil(i, n);
     const bool recording = step >= steps.warmup;
     const std::size_t sample_index = recording ? step - steps.warmup : 0;
-    const ForcingOf<V> g0 = detail::sample_lanes(f, i);
+    const ForcingOf<V> g0 = detail::sample_lanes<K, W>(f, i);
     const V rate = kernel.rate(y, g0);
     bool one_step = true;
     for (std::size_t l = 0; l < K; ++l) one_step = one_step && kernel.one_substep(rate[l], dt, options);
     if (one_step) {
       // Every day takes one step: kernel.interval with m = 1, all lanes at once.
-      const ForcingOf<V> gm = detail::midpoint_lanes(f, c);
-      const ForcingOf<V> gb = detail::sample_lanes(f, c.i1);
+      const ForcingOf<V> gm = detail::midpoint_lanes<K, W>(f, c);
+      const ForcingOf<V> gb = detail::sample_lanes<K, W>(f, c.i1);
       V unused, tau1;
       if (recording) stats.record(tau, -kernel.mean, dt, sample_index, trace);
       const StateOf<V> k2 = kernel.derivative(detail::axpy(y, 0.5 * dt, k1), gm, &unused);
