@@ -129,15 +129,15 @@ struct PolynomialLaw {
 struct LinearLaw {
   double k, c;
   template <typename T>
-  T tension(T xi, T xd) const {
+  TOWDB_SURGE_INLINE T tension(T xi, T xd) const {
     return k * xi + c * xd;
   }
   template <typename T>
-  T stiffness(T, T) const {
+  TOWDB_SURGE_INLINE T stiffness(T, T) const {
     return lanes::splat<T>(k);
   }
   template <typename T>
-  T damping(T, T) const {
+  TOWDB_SURGE_INLINE T damping(T, T) const {
     return lanes::splat<T>(c);
   }
   double mean_tension_n() const { return std::numeric_limits<double>::infinity(); }

@@ -30,8 +30,13 @@ void IntegratorOptions::validate() const {
 LaneIsa fastest_lane_isa() {
 #if defined(TOWDB_SURGE_HAVE_AVX2_PATH)
   // libgcc's check includes the operating system's support of the AVX
-  // register state (XGETBV), not only the CPUID bit.
-  static const bool avx2 = __builtin_cpu_supports("avx2") != 0;
+  // register state (XGETBV), not only the CPUID bit. __builtin_cpu_init
+  // first: libgcc's own initialiser may not have run yet when this is
+  // called from another static initialiser.
+  static const bool avx2 = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
   if (avx2) return LaneIsa::kAvx2;
 #endif
   return LaneIsa::kBaseline;

@@ -56,7 +56,7 @@
 // a processor with AVX2, integrate_days_fastest runs four days as one AVX
 // register (W = 4) in integrate_days_avx2, a function GCC compiles for AVX2
 // on its own (target attribute), chosen at run time (fastest_lane_isa). On
-// the CI machine this cut the integration from 10.4-10.7 to 8.7-9.1 ms per
+// the CI machine this cut the integration from 10.4-10.8 to 8.7-9.2 ms per
 // four days (bench/ BM_DayIntegrationLockStep/0 and /1).
 //
 // Integrator: classical RK4. The step is the forcing interval dt, split into
@@ -94,7 +94,7 @@ namespace towdb::simulation {
 
 // Element-wise arithmetic shared by the scalar and the lock-step paths. Each
 // helper is exactly the comparison-and-choice of the std:: function named,
-// so double and Lanes<K> give the same bits lane by lane.
+// so double and Lanes<K, W> give the same bits lane by lane.
 namespace lanes {
 
 // Native vectors of W doubles and their comparison masks: W = 2 is the
@@ -332,13 +332,16 @@ struct DayStatistics {
   long samples = 0;             // forcing samples recorded
 };
 
-// The tension law: a type with, for T = double and T = lanes::Lanes<K>,
+// The tension law: a type with, for T = double and T = lanes::Lanes<K, W>,
 //   template <typename T> T tension(T xi_m, T xi_dot_m_s) const;    // tau [N], already >= -T
 //   template <typename T> T stiffness(T xi_m, T xi_dot_m_s) const;  // d tau / d xi [N/m]
 //   template <typename T> T damping(T xi_m, T xi_dot_m_s) const;    // d tau / d xi' [N s/m]
 //   double mean_tension_n() const;                                  // T (slack when tau <= -T)
 // written with +, -, *, / and the lanes:: helpers only (so that every lane
-// computes what the double version computes).
+// computes what the double version computes), and each of the three forced
+// inline (TOWDB_SURGE_INLINE): integrate_days_avx2 passes AVX vectors by
+// value, and an out-of-line copy, compiled for the baseline, would expect
+// them elsewhere (a -O0 build would otherwise compute garbage).
 // Integrates one day; optional `trace` receives tau at the forcing samples:
 // trace[k] = tau at t = k dt, k = 0 .. N - 1.
 template <typename TensionLaw>
@@ -346,11 +349,12 @@ DayStatistics integrate_day(const SurgeParameters& p, const DayForcing& f, const
                             const IntegratorOptions& options, std::vector<double>* trace = nullptr);
 
 // K days with the same record length and step, integrated in lock step (see
-// the file comment), as K/W vectors of W doubles: W = 2 works on every
-// x86-64 processor (SSE2); W = 4 needs AVX and is only instantiated inside
-// integrate_days_avx2. Day l's statistics (and trace) are bit-identical to
-// integrate_day on day l alone, for either W. (Forced inline, so that the
-// AVX2 wrapper compiles the whole loop for AVX2.)
+// the file comment), as K/W vectors of W doubles: W = 2 is SSE2's vector,
+// which every x86-64 processor has; W = 4 is an AVX register, fast only in
+// code compiled for AVX (integrate_days_avx2; elsewhere GCC would split it).
+// Day l's statistics (and trace) are bit-identical to integrate_day on day l
+// alone, for either W. (Forced inline, so that integrate_days_avx2 compiles
+// the vector loop for AVX2; the scalar substep path it calls stays baseline.)
 template <typename TensionLaw, std::size_t K, std::size_t W = 2>
 std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const LockstepForcing<K>& f,
                                             const TensionLaw& law, const IntegratorOptions& options,
@@ -363,7 +367,9 @@ enum class LaneIsa { kBaseline, kAvx2 };
 LaneIsa fastest_lane_isa();
 const char* lane_isa_name(LaneIsa isa);  // "baseline", "avx2"
 
-#if defined(__GNUC__) && defined(__x86_64__)
+// (Not on Windows: GCC does not align the stack to 32 bytes there, GCC bug
+// 54412, and this function spills AVX registers with aligned moves.)
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(_WIN32)
 #define TOWDB_SURGE_HAVE_AVX2_PATH 1
 // integrate_days<TensionLaw, 4, 4>, the whole RK4 loop compiled for AVX2 by
 // GCC's target attribute on this function alone: everything else in the
@@ -380,14 +386,17 @@ template <typename TensionLaw>
 #endif
 
 // Four days in lock step with the vectors `isa` names (by default the
-// fastest this processor has); the results do not depend on it.
+// fastest this processor has; AVX2 only where the processor has it, else
+// the baseline vectors); the results do not depend on it.
 template <typename TensionLaw>
 std::array<DayStatistics, 4> integrate_days_fastest(const SurgeParameters& p, const LockstepForcing<4>& f,
                                                     const TensionLaw& law, const IntegratorOptions& options,
                                                     const std::array<std::vector<double>*, 4>& trace = {},
                                                     LaneIsa isa = fastest_lane_isa()) {
 #if defined(TOWDB_SURGE_HAVE_AVX2_PATH)
-  if (isa == LaneIsa::kAvx2) return integrate_days_avx2(p, f, law, options, trace);
+  if (isa == LaneIsa::kAvx2 && fastest_lane_isa() == LaneIsa::kAvx2) {
+    return integrate_days_avx2(p, f, law, options, trace);
+  }
 #endif
   (void)isa;
   return integrate_days<TensionLaw, 4>(p, f, law, options, trace);

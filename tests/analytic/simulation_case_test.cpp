@@ -12,7 +12,8 @@
 //   case-4  the straight-spring option above breaking strength (EQ-TOWLINE-13)
 //           in the lock-step lanes: the days of a case where the line passes
 //           the breaking strength equal each day simulated alone, and the
-//           lanes of the fastest vectors (AVX2 here) equal the baseline's.
+//           lanes of the fastest vectors (AVX2 where the processor has it)
+//           equal the baseline's.
 #include <bit>
 #include <cmath>
 #include <cstdint>

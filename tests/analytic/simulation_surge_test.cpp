@@ -35,15 +35,15 @@ namespace {
 struct LinearLine {
   double k = 0.0, c = 0.0, mean = 0.0;
   template <typename T>
-  T tension(T xi, T xi_dot) const {
+  TOWDB_SURGE_INLINE T tension(T xi, T xi_dot) const {
     return lanes::max(lanes::splat<T>(-mean), k * xi + c * xi_dot);
   }
   template <typename T>
-  T stiffness(T, T) const {
+  TOWDB_SURGE_INLINE T stiffness(T, T) const {
     return lanes::splat<T>(k);
   }
   template <typename T>
-  T damping(T, T) const {
+  TOWDB_SURGE_INLINE T damping(T, T) const {
     return lanes::splat<T>(c);
   }
   double mean_tension_n() const { return mean; }
@@ -129,15 +129,15 @@ TEST(SurgeIntegrator, ResonanceNearTheRelativeModeIsResolved) {  // surge-1 at r
 struct CubicLine {
   double cubic_n_m3 = 1.0e5;
   template <typename T>
-  T tension(T xi, T xi_dot) const {
+  TOWDB_SURGE_INLINE T tension(T xi, T xi_dot) const {
     return lanes::max(lanes::splat<T>(-2.0e5), 3.0e5 * xi + cubic_n_m3 * xi * xi * xi + 1.0e4 * xi_dot);
   }
   template <typename T>
-  T stiffness(T xi, T) const {
+  TOWDB_SURGE_INLINE T stiffness(T xi, T) const {
     return 3.0e5 + 3.0 * cubic_n_m3 * xi * xi;
   }
   template <typename T>
-  T damping(T, T) const {
+  TOWDB_SURGE_INLINE T damping(T, T) const {
     return lanes::splat<T>(1.0e4);
   }
   double mean_tension_n() const { return 2.0e5; }
