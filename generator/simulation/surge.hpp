@@ -206,7 +206,7 @@ TOWDB_SURGE_INLINE T splat(double x) {
   } else {
     // A vector literal (a broadcast): lane-by-lane stores read back as a
     // vector would stall store forwarding.
-    typedef std::remove_reference_t<decltype(T{}.h[0])> Part;
+    typedef typename T::Part Part;
     T r;
     for (std::size_t i = 0; i < T::kParts; ++i) {
       if constexpr (sizeof(Part) == 2 * sizeof(double)) {
