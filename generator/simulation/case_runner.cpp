@@ -53,6 +53,7 @@ enum Drift : std::size_t { kF2Tug = 0, kF2Tow = 1, kDriftCount = 2 };
 //   xc = clamp(xi, xi_min, xi_max), vc = clamp(xi', -v_max, v_max).
 // Inside the range this is exactly the thesis's polynomial.
 struct PolynomialLaw {
+  static constexpr bool kForcedInline = true;  // surge.hpp: may run on integrate_days_avx2
   const towline::TowlineFit* fit;
   towline::AboveBreakingModel model;
   double x_lo, x_hi, v_max, x_b, k_spring, slack;
@@ -127,6 +128,7 @@ struct PolynomialLaw {
 
 // tau = a10 xi + a01 xi', never slack (the linear-limit check).
 struct LinearLaw {
+  static constexpr bool kForcedInline = true;  // surge.hpp: may run on integrate_days_avx2
   double k, c;
   template <typename T>
   TOWDB_SURGE_INLINE T tension(T xi, T xd) const {
@@ -538,7 +540,8 @@ CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options) {
   // equations integrated in lock step (integrate_days): the grouping depends
   // only on the day numbers, and a day's result not even on its group. A last,
   // partial group repeats its first day in the unused lanes (results dropped).
-  r.lane_isa = fastest_lane_isa();
+  r.lane_isa = with_tension_law(
+      *m, [](const auto& law) { return lane_isa_for<std::decay_t<decltype(law)>>(fastest_lane_isa()); });
   std::vector<std::unique_ptr<GroupScratch>> scratch(static_cast<std::size_t>(workers(options.num_threads)));
   const int groups = (days + static_cast<int>(kLockstepDays) - 1) / static_cast<int>(kLockstepDays);
   parallel_for_workers(0, groups, options.num_threads, [&](std::int64_t g, int worker) {

@@ -338,10 +338,14 @@ struct DayStatistics {
 //   template <typename T> T damping(T xi_m, T xi_dot_m_s) const;    // d tau / d xi' [N s/m]
 //   double mean_tension_n() const;                                  // T (slack when tau <= -T)
 // written with +, -, *, / and the lanes:: helpers only (so that every lane
-// computes what the double version computes), and each of the three forced
-// inline (TOWDB_SURGE_INLINE): integrate_days_avx2 passes AVX vectors by
-// value, and an out-of-line copy, compiled for the baseline, would expect
-// them elsewhere (a -O0 build would otherwise compute garbage).
+// computes what the double version computes). A law may also declare
+//   static constexpr bool kForcedInline = true;
+// when its three templates are forced inline (TOWDB_SURGE_INLINE): only such
+// a law runs on integrate_days_avx2. That function passes AVX vectors by
+// value, and an out-of-line copy of a law's template, compiled for the
+// baseline, would expect them on the stack instead (in a -O0 build a law
+// without TOWDB_SURGE_INLINE computed garbage there). A law that does not
+// declare it runs on the baseline vectors: slower, never wrong.
 // Integrates one day; optional `trace` receives tau at the forcing samples:
 // trace[k] = tau at t = k dt, k = 0 .. N - 1.
 template <typename TensionLaw>
@@ -359,6 +363,13 @@ template <typename TensionLaw, std::size_t K, std::size_t W = 2>
 std::array<DayStatistics, K> integrate_days(const SurgeParameters& p, const LockstepForcing<K>& f,
                                             const TensionLaw& law, const IntegratorOptions& options,
                                             const std::array<std::vector<double>*, K>& trace = {});
+
+// Whether TensionLaw declares kForcedInline = true (see the law contract).
+template <typename TensionLaw, typename = void>
+inline constexpr bool kLawForcedInline = false;
+template <typename TensionLaw>
+inline constexpr bool kLawForcedInline<TensionLaw, std::void_t<decltype(TensionLaw::kForcedInline)>> =
+    TensionLaw::kForcedInline;
 
 // The vectors integrate_days_fastest uses on this processor: kAvx2 (four
 // days in one 4-double AVX register) where the processor and the operating
@@ -381,21 +392,32 @@ template <typename TensionLaw>
 [[gnu::target("avx2")]] std::array<DayStatistics, 4> integrate_days_avx2(
     const SurgeParameters& p, const LockstepForcing<4>& f, const TensionLaw& law, const IntegratorOptions& options,
     const std::array<std::vector<double>*, 4>& trace = {}) {
+  static_assert(kLawForcedInline<TensionLaw>, "integrate_days_avx2: the law must force its templates inline");
   return integrate_days<TensionLaw, 4, 4>(p, f, law, options, trace);
 }
 #endif
 
-// Four days in lock step with the vectors `isa` names (by default the
-// fastest this processor has; AVX2 only where the processor has it, else
-// the baseline vectors); the results do not depend on it.
+// The vectors integrate_days_fastest<TensionLaw> takes when asked for `isa`:
+// AVX2 only where the processor has it and for a law with kForcedInline,
+// else the baseline vectors.
+template <typename TensionLaw>
+LaneIsa lane_isa_for(LaneIsa isa) {
+  if (isa == LaneIsa::kAvx2 && kLawForcedInline<TensionLaw> && fastest_lane_isa() == LaneIsa::kAvx2) {
+    return LaneIsa::kAvx2;
+  }
+  return LaneIsa::kBaseline;
+}
+
+// Four days in lock step with the vectors lane_isa_for<TensionLaw>(isa) (by
+// default the fastest this processor has); the results do not depend on it.
 template <typename TensionLaw>
 std::array<DayStatistics, 4> integrate_days_fastest(const SurgeParameters& p, const LockstepForcing<4>& f,
                                                     const TensionLaw& law, const IntegratorOptions& options,
                                                     const std::array<std::vector<double>*, 4>& trace = {},
                                                     LaneIsa isa = fastest_lane_isa()) {
 #if defined(TOWDB_SURGE_HAVE_AVX2_PATH)
-  if (isa == LaneIsa::kAvx2 && fastest_lane_isa() == LaneIsa::kAvx2) {
-    return integrate_days_avx2(p, f, law, options, trace);
+  if constexpr (kLawForcedInline<TensionLaw>) {
+    if (lane_isa_for<TensionLaw>(isa) == LaneIsa::kAvx2) return integrate_days_avx2(p, f, law, options, trace);
   }
 #endif
   (void)isa;

@@ -33,6 +33,7 @@ namespace {
 // (Tension laws are templates on the number type: the integrator's lock-step
 // path evaluates them on vector lanes, surge.hpp.)
 struct LinearLine {
+  static constexpr bool kForcedInline = true;  // its templates are TOWDB_SURGE_INLINE
   double k = 0.0, c = 0.0, mean = 0.0;
   template <typename T>
   TOWDB_SURGE_INLINE T tension(T xi, T xi_dot) const {
@@ -127,6 +128,7 @@ TEST(SurgeIntegrator, ResonanceNearTheRelativeModeIsResolved) {  // surge-1 at r
 
 // A cubic-stiffening line (snap-like), slack below -2e5 N.
 struct CubicLine {
+  static constexpr bool kForcedInline = true;  // its templates are TOWDB_SURGE_INLINE
   double cubic_n_m3 = 1.0e5;
   template <typename T>
   TOWDB_SURGE_INLINE T tension(T xi, T xi_dot) const {
@@ -141,6 +143,24 @@ struct CubicLine {
     return lanes::splat<T>(1.0e4);
   }
   double mean_tension_n() const { return 2.0e5; }
+};
+
+// The same line without kForcedInline: it never runs on the AVX2 path.
+struct UnmarkedCubicLine {
+  CubicLine line;
+  template <typename T>
+  TOWDB_SURGE_INLINE T tension(T xi, T xi_dot) const {
+    return line.tension(xi, xi_dot);
+  }
+  template <typename T>
+  TOWDB_SURGE_INLINE T stiffness(T xi, T xi_dot) const {
+    return line.stiffness(xi, xi_dot);
+  }
+  template <typename T>
+  TOWDB_SURGE_INLINE T damping(T xi, T xi_dot) const {
+    return line.damping(xi, xi_dot);
+  }
+  double mean_tension_n() const { return line.mean_tension_n(); }
 };
 
 TEST(SurgeIntegrator, ConvergesWithForcingInterval) {  // surge-2
@@ -253,6 +273,17 @@ TEST(SurgeIntegrator, LockStepDaysEqualSingleDaysBitForBit) {  // surge-4
     }
   }
   if (paths.size() == 1) std::printf("surge-4: this processor has no AVX2; only the baseline vectors were compared\n");
+  // The paths taken: AVX2 only for a law that declares its templates forced
+  // inline; the unmarked law gets the baseline vectors, with the same bits.
+  EXPECT_EQ(lane_isa_for<CubicLine>(LaneIsa::kAvx2), fastest_lane_isa());
+  EXPECT_EQ(lane_isa_for<CubicLine>(LaneIsa::kBaseline), LaneIsa::kBaseline);
+  EXPECT_EQ(lane_isa_for<UnmarkedCubicLine>(LaneIsa::kAvx2), LaneIsa::kBaseline);
+  const auto unmarked = integrate_days_fastest(p, lockstep, UnmarkedCubicLine{line}, o, {}, LaneIsa::kAvx2);
+  for (std::size_t l = 0; l < f.size(); ++l) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(unmarked[l].max_tension_n),
+              std::bit_cast<std::uint64_t>(together[l].max_tension_n))
+        << "day " << l;
+  }
   // The premise: the days really took different paths (one step per interval
   // for the smallest, substeps for the largest, with and without slack).
   EXPECT_EQ(substeps_min, static_cast<long>(n + 1200));  // + 600 s of warm-up
