@@ -75,7 +75,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -194,9 +193,6 @@ TOWDB_SURGE_INLINE LaneMask<K, W>& operator-=(LaneMask<K, W>& a, const LaneMask<
   for (std::size_t i = 0; i < K / W; ++i) a.h[i] -= b.h[i];
   return a;
 }
-
-template <typename T>
-inline constexpr std::size_t kWidth = sizeof(T) / sizeof(double);
 
 // x in every lane (x itself for double).
 template <typename T>
