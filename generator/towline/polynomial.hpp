@@ -73,17 +73,34 @@ enum class SlackFit {
   kOneSided,
 };
 
+// How the fit treats small, slow motions (EQ-TOWLINE-16).
+struct SmallMotionFit {
+  // a10 held at this value [N/m] instead of fitted (NaN: fitted, as t3fer97).
+  // The quasi-static limit: for xi = A sin(w t) with A, w -> 0 the tension is
+  // the static catenary's k_s A, and of the nine terms only a10 survives.
+  double fixed_a10_n_m = std::numeric_limits<double>::quiet_NaN();
+  // Per-sample weights (empty: all 1): row i of the least squares is
+  // multiplied by weights[i], so the fit minimises sum (w_i e_i)^2.
+  std::vector<double> weights;
+};
+
 // EQ-TOWLINE-12: least squares over the samples with tau <= max_dynamic_tension_n
 // (breaking strength minus mean tension; +inf keeps all). Columns are scaled by
 // the largest |xi| and |xi_dot| before a column-pivoting QR solve. The errors
 // reported are those of the model as used: P itself with kTwoSided (thesis),
 // max(P, min_dynamic_tension_n) with kOneSided (min_dynamic_tension_n is the
-// slack limit -T_min). Throws InputError if fewer than 9 samples remain or the
-// columns are degenerate, NumericalError if the active set does not settle.
+// slack limit -T_min), unweighted. Throws InputError if fewer than 9 samples
+// remain, the columns are degenerate or the weights do not match the samples,
+// NumericalError if the active set does not settle.
 PolynomialFit fit_polynomial(const std::vector<TensionSample>& samples,
                              double max_dynamic_tension_n,
                              double min_dynamic_tension_n = -std::numeric_limits<double>::infinity(),
-                             SlackFit slack = SlackFit::kTwoSided);
+                             SlackFit slack = SlackFit::kTwoSided, const SmallMotionFit& small = {});
+
+// EQ-TOWLINE-17: amplitude of the first harmonic of P(A sin wt, A w cos wt) [N]:
+// sqrt(b^2 + c^2), b = a10 A + (3/4) a30 A^3 + (1/4) a12 A^3 w^2,
+// c = a01 A w + (1/4) a21 A^3 w + (3/4) a03 A^3 w^3 (the even terms have none).
+double first_harmonic_n(const PolynomialCoefficients& c, double amplitude_m, double omega_rad_s);
 
 // One prescribed extension p0(t) = amplitude sin(omega t).
 struct Excitation {

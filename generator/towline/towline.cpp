@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
@@ -26,6 +27,7 @@ void TowlineFitOptions::validate() const {
   require_in_range("towline_fit.min_elements", min_elements, 4, 1 << 16);
   require_in_range("towline_fit.max_elements", max_elements, 2 * min_elements, 1 << 18);
   require_in_range("towline_fit.resolution_tolerance", resolution_tolerance, 1e-6, 0.5);
+  require_in_range("towline_fit.run_weight_exponent", run_weight_exponent, 0.0, 1.0);
   require_in_range("towline_fit.max_steps_per_period", max_steps_per_period, dynamics.steps_per_period,
                    1 << 20);
 }
@@ -163,6 +165,29 @@ struct PeriodicFallback {
   }
 };
 
+// EQ-TOWLINE-16: one weight per sample, (rms_max / rms_run)^exponent, where
+// rms_run is the RMS tau of the sample's run; a run with no tension at all
+// (rms 0) gets the weight of the smallest non-zero one.
+std::vector<double> run_weights(const std::vector<HarmonicRun>& runs, double exponent) {
+  std::vector<double> rms(runs.size(), 0.0);
+  double rms_max = 0.0;
+  double rms_min = std::numeric_limits<double>::infinity();
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    double sum = 0.0;
+    for (const auto& q : runs[r].samples) sum += q.tau_n * q.tau_n;
+    if (!runs[r].samples.empty()) rms[r] = std::sqrt(sum / static_cast<double>(runs[r].samples.size()));
+    rms_max = std::max(rms_max, rms[r]);
+    if (rms[r] > 0.0) rms_min = std::min(rms_min, rms[r]);
+  }
+  std::vector<double> weights;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const double own = rms[r] > 0.0 ? rms[r] : rms_min;
+    const double weight = exponent == 0.0 || !(own > 0.0) ? 1.0 : std::pow(rms_max / own, exponent);
+    weights.insert(weights.end(), runs[r].samples.size(), weight);
+  }
+  return weights;
+}
+
 }  // namespace
 
 std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towline,
@@ -265,8 +290,11 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
     s.min_dt_s = std::min(s.min_dt_s, r.min_dt_s);
     s.max_dt_s = std::max(s.max_dt_s, r.max_dt_s);
   }
+  SmallMotionFit small;
+  small.weights = run_weights(runs, options.run_weight_exponent);
+  if (options.hold_static_stiffness) small.fixed_a10_n_m = cat.static_stiffness_n_m();
   const PolynomialFit fit = fit_polynomial(samples, breaking_n - mean_tension_n,
-                                           model->tension_floor_n(), options.slack_fit);
+                                           model->tension_floor_n(), options.slack_fit, small);
 
   // EQ-TOWLINE-13: static extension at which H reaches breaking strength.
   const Catenary at_break = Catenary::solve(towline, points, breaking_n, options.catenary);
@@ -291,6 +319,9 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
   s.fit_rms_error_n = fit.rms_error_n;
   s.fit_max_error_n = fit.max_error_n;
   s.rms_tension_n = fit.rms_tension_n;
+  s.small_motion_ratio = first_harmonic_n(fit.coefficients, kSmallMotionAmplitudeM,
+                                          2.0 * std::numbers::pi / kSmallMotionPeriodS) /
+                         (s.static_stiffness_n_m * kSmallMotionAmplitudeM);
   s.samples_used = fit.samples_used;
   s.samples_excluded = fit.samples_excluded;
   for (const TensionSample& x : samples) {
@@ -341,7 +372,8 @@ std::string cache_key(const model::Towline& towline, const TowPoints& points, do
                    static_cast<double>(o.dynamics.newton_max_iterations),
                    static_cast<double>(o.max_steps_per_period),
                    static_cast<double>(o.slack_fit == SlackFit::kOneSided),
-                   static_cast<double>(o.max_elements), o.resolution_tolerance}) {
+                   static_cast<double>(o.max_elements), o.resolution_tolerance,
+                   static_cast<double>(o.hold_static_stiffness), o.run_weight_exponent}) {
     append_bits(key, x);
   }
   append_bits(key, static_cast<double>(o.excitation.frequencies_rad_s.size()));

@@ -67,6 +67,9 @@ struct RunOptions {
   // physics to see which one a disagreement comes from.
   bool second_order_forces = true;  // Newman slowly varying surge forces (CaseOptions)
   bool wave_surge_damping = true;   // wave-induced surge damping, thesis 3.5 (CaseOptions)
+  // The thesis's towline fit (t3fer97: a10 fitted, plain least squares)
+  // instead of EQ-TOWLINE-16's small-motion fit.
+  bool thesis_towline_fit = false;
   void validate() const;
 };
 

@@ -1,7 +1,10 @@
 // Manufactured solutions for the polynomial towline model and its fit
 // (towdb::towline, towline/towline.hpp EQ-TOWLINE-11..14).
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -178,6 +181,72 @@ TEST(TowlineFit, StraightSpringAboveBreakingStrength) {
   EXPECT_GT(limited, 0);
   EXPECT_LE(s.slack_limit_n, -s.mean_tension_n);
   EXPECT_GT(s.slack_limit_n, -1.01 * s.mean_tension_n);
+}
+
+
+// EVIDENCE-OF: EQ-TOWLINE-16
+// a10 held: it comes back exactly as held, and when held at the true value
+// the other eight coefficients of an exact cubic come back as well.
+TEST(TowlineFit, HeldLinearTermIsExactAndTheRestRecovered) {
+  const PolynomialCoefficients p = manufactured();
+  const double inf = std::numeric_limits<double>::infinity();
+  SmallMotionFit held;
+  held.fixed_a10_n_m = p.a10();
+  const PolynomialFit fit = fit_polynomial(sinusoid_samples(p), inf, -inf, SlackFit::kTwoSided, held);
+  for (int k = 0; k < PolynomialCoefficients::kCount; ++k) {
+    EXPECT_REL_CLOSE(fit.coefficients.a[static_cast<std::size_t>(k)], p.a[static_cast<std::size_t>(k)],
+                     kExactFitRelTol)
+        << "coefficient " << k;
+  }
+  held.fixed_a10_n_m = 0.5 * p.a10();
+  const PolynomialFit off = fit_polynomial(sinusoid_samples(p), inf, -inf, SlackFit::kTwoSided, held);
+  EXPECT_EQ(off.coefficients.a10(), 0.5 * p.a10());
+  EXPECT_GT(off.rms_error_n, 1e-3 * off.rms_tension_n);  // the other terms cannot absorb a wrong slope
+}
+
+// EVIDENCE-OF: EQ-TOWLINE-16
+// Weights move the fit toward the heavy rows: samples of two different
+// cubics, the second weighted 1e4, give (nearly) the second cubic.
+TEST(TowlineFit, WeightsShiftTheFitTowardHeavyRows) {
+  const PolynomialCoefficients p = manufactured();
+  PolynomialCoefficients q = p;
+  q.a[0] *= 2.0;
+  q.a[5] *= -3.0;
+  std::vector<TensionSample> samples = sinusoid_samples(p);
+  const std::vector<TensionSample> heavy = sinusoid_samples(q);
+  samples.insert(samples.end(), heavy.begin(), heavy.end());
+  SmallMotionFit weighted;
+  weighted.weights.assign(samples.size(), 1.0);
+  std::fill(weighted.weights.begin() + static_cast<std::ptrdiff_t>(heavy.size()), weighted.weights.end(), 1e4);
+  const double inf = std::numeric_limits<double>::infinity();
+  const PolynomialFit fit = fit_polynomial(samples, inf, -inf, SlackFit::kTwoSided, weighted);
+  // The light rows pull by (1/1e4)^2 of the heavy ones: 1e-6 relative at most.
+  EXPECT_REL_CLOSE(fit.coefficients.a10(), q.a10(), 1e-6);
+  EXPECT_REL_CLOSE(fit.coefficients.a30(), q.a30(), 1e-6);
+  const PolynomialFit plain = fit_polynomial(samples, inf);
+  EXPECT_GT(std::abs(plain.coefficients.a10() - q.a10()), 0.1 * q.a10());  // unweighted: in between
+}
+
+// EVIDENCE-OF: EQ-TOWLINE-17
+// The closed-form first harmonic equals the Fourier integral of
+// P(A sin wt, A w cos wt) over one period (trapezoidal rule, exact for a
+// trigonometric polynomial of degree 3 with more than 6 points).
+TEST(TowlineFit, FirstHarmonicMatchesTheFourierIntegral) {
+  const PolynomialCoefficients p = manufactured();
+  for (const auto& [a, w] : {std::pair{0.3048, 0.0628}, std::pair{2.0, 0.5}, std::pair{6.0, 1.6}}) {
+    constexpr int kPoints = 64;
+    double b = 0.0, c = 0.0;
+    for (int k = 0; k < kPoints; ++k) {
+      const double phase = 2.0 * kPi * k / kPoints;
+      const double tau = p.evaluate_n(a * std::sin(phase), a * w * std::cos(phase));
+      b += 2.0 / kPoints * tau * std::sin(phase);
+      c += 2.0 / kPoints * tau * std::cos(phase);
+    }
+    EXPECT_REL_CLOSE(first_harmonic_n(p, a, w), std::hypot(b, c), 1e-12) << "A " << a << " m, w " << w;
+  }
+  PolynomialCoefficients linear;
+  linear.a[0] = 1000.0;
+  EXPECT_DOUBLE_EQ(first_harmonic_n(linear, 0.5, 0.1), 500.0);  // k A alone
 }
 
 }  // namespace

@@ -69,6 +69,26 @@ TEST(TowlineOptions, FitNeedsNineUsableSamples) {
   EXPECT_THROW(fit_polynomial(degenerate, 10.0), InputError);
 }
 
+TEST(TowlineOptions, SmallMotionFitInputsAreChecked) {
+  std::vector<TensionSample> samples;
+  for (int k = 0; k < 40; ++k) samples.push_back({std::sin(0.3 * k), std::cos(0.7 * k), 1.0 * k, false});
+  const double inf = std::numeric_limits<double>::infinity();
+  SmallMotionFit wrong_count;
+  wrong_count.weights.assign(samples.size() - 1, 1.0);
+  expect_input_error([&] { fit_polynomial(samples, inf, -inf, SlackFit::kTwoSided, wrong_count); },
+                     "weights count");
+  SmallMotionFit negative;
+  negative.weights.assign(samples.size(), 1.0);
+  negative.weights[3] = -1.0;
+  expect_input_error([&] { fit_polynomial(samples, inf, -inf, SlackFit::kTwoSided, negative); }, "weight");
+  SmallMotionFit infinite;
+  infinite.fixed_a10_n_m = inf;
+  expect_input_error([&] { fit_polynomial(samples, inf, -inf, SlackFit::kTwoSided, infinite); }, "fixed a10");
+  TowlineFitOptions options;
+  options.run_weight_exponent = 1.5;
+  expect_input_error([&] { options.validate(); }, "towline_fit.run_weight_exponent");
+}
+
 // The cache computes each (towline, points, tension, options) fit once, also
 // when several threads ask at the same moment, and returns the same object.
 TEST(TowlineOptions, CacheComputesEachFitOnce) {

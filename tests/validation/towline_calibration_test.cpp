@@ -1,5 +1,5 @@
 // The brief's fit criterion on every T-ATF calibration case of
-// ../shared/validation/appendix_c_calibration.csv (thesis Appendix C):
+// tests/data/validation/appendix_c_calibration.csv (thesis Appendix C):
 // the polynomial's RMS error against the 56 dynamics runs below 10% of the
 // RMS dynamic tension, with the T-ATF wire (Appendix A t-atf.win) or the
 // nylon estimate plus the 90 ft chain pendant (tests/data/towline).
@@ -9,9 +9,11 @@
 #include <cstddef>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -20,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include "common/units.hpp"
+#include "io/ship_file.hpp"
 #include "test_support.hpp"
 #include "towline/towline.hpp"
 #include "towline_test_lines.hpp"
@@ -38,9 +41,7 @@ struct CalibrationLine {
 // Distinct (line, length, mean tension) of the T-ATF rows.
 std::vector<CalibrationLine> calibration_lines(bool fiber) {
   std::vector<CalibrationLine> out;
-  const auto shared = test::shared_dir();
-  if (shared.empty()) return out;
-  std::ifstream in(shared / "validation/appendix_c_calibration.csv");
+  std::ifstream in(test::source_dir() / "tests/data/validation/appendix_c_calibration.csv");
   std::string line;
   std::getline(in, line);  // header: case,tug,tow,speed_kt,wind_kt,heading_deg,length_ft,line,mean_lbf,days,dyn_kips
   std::set<std::tuple<std::string, double, double>> seen;
@@ -106,7 +107,7 @@ TautFitErrors taut_fit_errors(const TowlineFit& fit) {
 }
 
 void check_lines(const std::vector<CalibrationLine>& lines) {
-  ASSERT_FALSE(lines.empty()) << "../shared/validation/appendix_c_calibration.csv not found";
+  ASSERT_FALSE(lines.empty()) << "tests/data/validation/appendix_c_calibration.csv not found";
   for (const auto& c : lines) {
     const auto fit = build_towline_fit(test::thesis_towline(c.hawser, c.length_ft), test::thesis_tow_points(),
                                        units::lbf_to_n(c.mean_lbf));
@@ -148,6 +149,104 @@ TEST(TowlineCalibration, FiberLinesFitWithinTenPercent) { check_lines(calibratio
 // on them reach several times the breaking strength, so a narrower set would
 // leave the polynomial extrapolating where the extremes occur).
 TEST(TowlineCalibration, DISABLED_WireLinesFitWithinTenPercent) { check_lines(calibration_lines(false)); }
+
+
+// The lines of the calibration cases as the simulation rigs them: each tug's
+// hawser from ships/ (wire or fiber, then its pendant) between that tug's and
+// that tow's tow points, at the case's mean tension; one per distinct
+// (tug, tow, line, length, mean tension) of tests/data/validation.
+struct BundledLine {
+  std::string tug, tow;
+  model::LineKind kind;
+  double length_ft;
+  double mean_lbf;
+};
+
+std::vector<BundledLine> bundled_calibration_lines() {
+  std::set<std::tuple<std::string, std::string, std::string, double, double>> seen;
+  std::vector<BundledLine> out;
+  for (const auto& f : test::read_csv_rows(test::source_dir() / "tests/data/validation/appendix_c_calibration.csv")) {
+    if (f.size() != 11) throw std::runtime_error("calibration row with " + std::to_string(f.size()) + " cells");
+    const auto key = std::make_tuple(f[1], f[2], f[7], test::parse_number(f[6]), test::parse_number(f[8]));
+    if (!seen.insert(key).second) continue;
+    out.push_back({f[1], f[2], f[7] == "w" ? model::LineKind::kWire : model::LineKind::kFiber,
+                   std::get<3>(key), std::get<4>(key)});
+  }
+  return out;
+}
+
+// Mean over the largest runs (the two largest amplitude fractions of each
+// frequency: where the daily maxima come from) of |peak of the model as the
+// simulation uses it - peak of the run| / peak of the run.
+double large_run_peak_error(const TowlineFit& fit, const PolynomialCoefficients& c) {
+  const FitSummary& s = fit.summary();
+  std::map<double, double> largest;  // omega -> largest amplitude
+  for (const auto& run : fit.runs()) largest[run.omega_rad_s] = std::max(largest[run.omega_rad_s], run.amplitude_m);
+  double sum = 0.0;
+  int count = 0;
+  for (const auto& run : fit.runs()) {
+    if (run.amplitude_m < 0.65 * largest[run.omega_rad_s]) continue;
+    double peak_run = -std::numeric_limits<double>::infinity(), peak_model = peak_run;
+    for (const auto& q : run.samples) {
+      if (q.tau_n + s.mean_tension_n > s.breaking_strength_n) continue;
+      peak_run = std::max(peak_run, q.tau_n);
+      peak_model = std::max(peak_model, std::max(c.evaluate_n(q.xi_m, q.xi_dot_m_s), s.slack_limit_n));
+    }
+    if (!(peak_run > 0.0)) continue;
+    sum += std::abs(peak_model - peak_run) / peak_run;
+    ++count;
+  }
+  return count > 0 ? sum / count : 0.0;
+}
+
+// EVIDENCE-OF: EQ-TOWLINE-16
+// Project issue: on every bundled towline at the calibration mean tensions the
+// polynomial's first harmonic at A = 1 ft, T = 100 s is within 10 % of k_s A,
+// and the fit where the extremes come from is no worse than the thesis's fit
+// (t3fer97, refitted here from the same runs): the largest runs' peak error,
+// averaged over the lines and at its worst. Long: 61 fits. The measured
+// figures are in docs/validation.md ("Towline small motion").
+TEST(TowlineCalibration, SmallMotionOnEveryBundledLine) {
+  constexpr double kSmallMotionRelTol = 0.10;  // the issue's criterion
+  const io::ShipCatalog catalog = io::ShipCatalog::load(test::source_dir() / "ships");
+  double sum_new = 0.0, sum_thesis = 0.0, worst_new = 0.0, worst_thesis = 0.0;
+  int inside_thesis = 0;
+  const std::vector<BundledLine> lines = bundled_calibration_lines();
+  ASSERT_EQ(lines.size(), 61u);
+  for (const BundledLine& c : lines) {
+    const model::Vessel& tug = catalog.vessel(c.tug).vessel;
+    const model::Vessel& tow = catalog.vessel(c.tow).vessel;
+    const auto fit = build_towline_fit(catalog.towline(tug, c.kind, units::ft_to_m(c.length_ft)),
+                                       TowPoints{tug.tow_point.z_m, tow.tow_point.z_m}, units::lbf_to_n(c.mean_lbf));
+    const FitSummary& s = fit->summary();
+    std::vector<TensionSample> samples;
+    for (const auto& run : fit->runs()) samples.insert(samples.end(), run.samples.begin(), run.samples.end());
+    const PolynomialFit thesis = fit_polynomial(samples, s.breaking_strength_n - s.mean_tension_n, s.slack_limit_n,
+                                                SlackFit::kOneSided);
+    const double thesis_ratio = first_harmonic_n(thesis.coefficients, kSmallMotionAmplitudeM,
+                                                 2.0 * std::acos(-1.0) / kSmallMotionPeriodS) /
+                                (s.static_stiffness_n_m * kSmallMotionAmplitudeM);
+    const double e_new = large_run_peak_error(*fit, s.coefficients);
+    const double e_thesis = large_run_peak_error(*fit, thesis.coefficients);
+    std::printf("%-6s %-5s %-5s %5.0f ft %7.0f lbf: small motion %.3f (thesis fit %.3f); large-run peak error "
+                "%.3f (%.3f); RMS error %.3f (%.3f)\n",
+                c.tug.c_str(), c.tow.c_str(), c.kind == model::LineKind::kWire ? "wire" : "fiber", c.length_ft,
+                c.mean_lbf, s.small_motion_ratio, thesis_ratio, e_new, e_thesis,
+                s.fit_rms_error_n / s.rms_tension_n, thesis.rms_error_n / thesis.rms_tension_n);
+    EXPECT_NEAR(s.small_motion_ratio, 1.0, kSmallMotionRelTol) << c.tug << " " << c.tow << " " << c.length_ft;
+    inside_thesis += std::abs(thesis_ratio - 1.0) <= kSmallMotionRelTol ? 1 : 0;
+    sum_new += e_new;
+    sum_thesis += e_thesis;
+    worst_new = std::max(worst_new, e_new);
+    worst_thesis = std::max(worst_thesis, e_thesis);
+  }
+  const double n = static_cast<double>(lines.size());
+  std::printf("large-run peak error: mean %.3f (thesis fit %.3f), worst %.3f (%.3f); thesis fit within 10 %% of "
+              "k_s A on %d of %zu lines\n",
+              sum_new / n, sum_thesis / n, worst_new, worst_thesis, inside_thesis, lines.size());
+  EXPECT_LE(sum_new, sum_thesis);
+  EXPECT_LE(worst_new, worst_thesis);
+}
 
 }  // namespace
 }  // namespace towdb::towline
