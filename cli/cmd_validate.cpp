@@ -50,6 +50,7 @@ struct ValidateArgs {
   bool no_second_order = false;
   bool no_wave_damping = false;
   bool thesis_towline_fit = false;
+  bool tow_drift_at_tow = false;
 };
 
 std::string read_text(const fs::path& path) {
@@ -115,6 +116,7 @@ std::string run_signature(const validation::RunOptions& o, const io::ShipCatalog
   os << "days_scale=" << fmt(o.days_scale) << " min_days=" << o.min_days
      << " response_frequencies=" << o.response_frequencies << " second_order_forces=" << o.second_order_forces
      << " wave_surge_damping=" << o.wave_surge_damping << " thesis_towline_fit=" << o.thesis_towline_fit
+     << " tow_drift_at_tow=" << o.tow_drift_at_tow
      << " ships_sha256=" << io::sha256_hex(hashes) << "\n";
   return os.str();
 }
@@ -195,6 +197,7 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
   options.second_order_forces = !a.no_second_order;
   options.wave_surge_damping = !a.no_wave_damping;
   options.thesis_towline_fit = a.thesis_towline_fit;
+  options.tow_drift_at_tow = a.tow_drift_at_tow;
   options.validate();
 
   const fs::path out(a.out_dir);
@@ -288,6 +291,7 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
   if (a.no_second_order) note << " --no-second-order-forces";
   if (a.no_wave_damping) note << " --no-wave-surge-damping";
   if (a.thesis_towline_fit) note << " --thesis-towline-fit";
+  if (a.tow_drift_at_tow) note << " --tow-drift-at-tow";
   note << "`. Simulated days per case = max(" << a.min_days << ", round(" << fmt(a.days_scale)
        << " x thesis days)); seed = thesis case number. Sum of case run times " << fmt(case_time_s, 0)
        << " s (this invocation: " << fmt(wall_s, 0) << " s wall, " << reused << " cases reused from the journal).";
@@ -349,6 +353,8 @@ void add_validate_command(CLI::App& app, Context& ctx) {
   c->add_flag("--no-wave-surge-damping", a->no_wave_damping, "Diagnostic: leave out the wave-induced surge damping");
   c->add_flag("--thesis-towline-fit", a->thesis_towline_fit,
               "Diagnostic: fit the towline polynomial as the thesis did (a10 fitted, unweighted), not EQ-TOWLINE-16");
+  c->add_flag("--tow-drift-at-tow", a->tow_drift_at_tow,
+              "Diagnostic: the tow's slowly varying force from the wave envelope at the tow (not the thesis's shared one)");
   c->callback([&ctx, a] { ctx.action = [&ctx, a] { return run_validate(ctx, *a); }; });
 }
 

@@ -262,8 +262,8 @@ struct DaySynthesizer::Impl {
   std::vector<unsigned char> negative;
   // 0.5 a_j H_k(w_j), conjugated when w_e < 0 (EQ-SEA-8).
   std::vector<std::vector<std::complex<double>>> linear_gain;
-  // 0.5 a_j sqrt(D_k(w_j)) (EQ-SEA-9).
-  std::vector<std::vector<double>> drift_gain;
+  // 0.5 a_j sqrt(D_k(w_j)) exp(i theta_kj), conjugated when w_e < 0 (EQ-SEA-9).
+  std::vector<std::vector<std::complex<double>>> drift_gain;
   std::vector<double> drift_mean;
   // Bins [first, first + count) of the c2r input that no component writes:
   // they are zeroed before every transform (c2r overwrites its input). When
@@ -325,7 +325,8 @@ std::span<const double> DaySynthesizer::Workspace::drift(std::size_t k) const {
 
 DaySynthesizer::DaySynthesizer(RecordPlan plan,
                                const std::vector<std::vector<std::complex<double>>>& linear_transfer,
-                               const std::vector<std::vector<double>>& drift_coefficient)
+                               const std::vector<std::vector<double>>& drift_coefficient,
+                               const std::vector<std::vector<double>>& drift_phase_rad)
     : impl_(std::make_unique<Impl>(std::move(plan))) {
   Impl& im = *impl_;
   const std::vector<WaveComponent>& comps = im.plan.components();
@@ -369,12 +370,22 @@ DaySynthesizer::DaySynthesizer(RecordPlan plan,
     }
     im.linear_gain.push_back(std::move(gain));
   }
+  require_input(drift_phase_rad.empty() || drift_phase_rad.size() == drift_coefficient.size(),
+                "drift_phase_rad (size)", static_cast<double>(drift_phase_rad.size()),
+                "must be empty or have one series per drift_coefficient series (" +
+                    std::to_string(drift_coefficient.size()) + ")");
   for (std::size_t k = 0; k < drift_coefficient.size(); ++k) {
     const auto& d = drift_coefficient[k];
     require_input(d.size() == nc, "drift_coefficient[" + std::to_string(k) + "] (size)",
                   static_cast<double>(d.size()),
                   "must have one entry per plan component (" + std::to_string(nc) + ")");
-    std::vector<double> gain(nc);
+    const std::vector<double>* theta = drift_phase_rad.empty() ? nullptr : &drift_phase_rad[k];
+    if (theta != nullptr) {
+      require_input(theta->size() == nc, "drift_phase_rad[" + std::to_string(k) + "] (size)",
+                    static_cast<double>(theta->size()),
+                    "must have one entry per plan component (" + std::to_string(nc) + ")");
+    }
+    std::vector<std::complex<double>> gain(nc);
     double mean = 0.0;
     for (std::size_t j = 0; j < nc; ++j) {
       if (!(std::isfinite(d[j]) && d[j] >= 0.0)) {
@@ -382,7 +393,14 @@ DaySynthesizer::DaySynthesizer(RecordPlan plan,
                       "must be finite and >= 0 (Newman's approximation needs D >= 0)");
       }
       const double a = comps[j].amplitude_m;
-      gain[j] = 0.5 * a * std::sqrt(d[j]);
+      const double th = theta != nullptr ? (*theta)[j] : 0.0;
+      if (!std::isfinite(th)) {
+        require_input(false, "drift_phase_rad[" + std::to_string(k) + "][" + std::to_string(j) + "]", th,
+                      "must be finite");
+      }
+      // The phase enters like phi_j: conjugated with it for w_e < 0 (EQ-SEA-8).
+      const std::complex<double> lag(std::cos(th), comps[j].negative_encounter ? -std::sin(th) : std::sin(th));
+      gain[j] = 0.5 * a * std::sqrt(d[j]) * lag;
       mean += a * a * d[j];
     }
     im.drift_gain.push_back(std::move(gain));
@@ -494,14 +512,14 @@ void DaySynthesizer::synthesize(std::uint64_t seed, std::uint64_t day, Workspace
   // each a c2r of half-amplitudes (b/2) e^{i phi} and -i (b/2) e^{i phi}
   // (conjugated, and -i -> +i, for w_e < 0); f2 = mean - (p^2 + q^2).
   for (std::size_t k = 0; k < im.drift_gain.size(); ++k) {
-    const double* gain = im.drift_gain[k].data();
+    const std::complex<double>* gain = im.drift_gain[k].data();
     double* p = buf.outputs[buf.n_linear + k];
     im.clear_input(buf.spectrum);
-    for (std::size_t j = 0; j < nc; ++j) spec[im.bins[j]] = gain[j] * buf.phasors[j];  // real * complex
+    for (std::size_t j = 0; j < nc; ++j) spec[im.bins[j]] = mul(gain[j], buf.phasors[j]);
     fftw_execute_dft_c2r(im.c2r, buf.spectrum, p);
     im.clear_input(buf.spectrum);
     for (std::size_t j = 0; j < nc; ++j) {
-      const std::complex<double> v = gain[j] * buf.phasors[j];
+      const std::complex<double> v = mul(gain[j], buf.phasors[j]);
       // -i v = (v.imag, -v.real); +i v = (-v.imag, v.real).
       spec[im.bins[j]] = im.negative[j] != 0 ? std::complex<double>(-v.imag(), v.real())
                                              : std::complex<double>(v.imag(), -v.real());

@@ -107,9 +107,16 @@ class DaySynthesizer {
   //   (output unit per metre of wave amplitude; e.g. N/m for a surge force).
   // drift_coefficient[k][j] = D_k(w_j) >= 0 (output unit per m^2 of amplitude
   //   squared, e.g. R_aw/zeta_a^2 in N/m^2) of second-order series k (EQ-SEA-9).
+  // drift_phase_rad[k][j] (optional: empty = all 0) = theta_k(w_j), the phase
+  //   of component j at the point where second-order series k acts, relative
+  //   to the elevation at the reference origin: E_k is built from
+  //   a_j sqrt(D_k) exp(i (w_e,j t + phi_j + theta_kj)) (EQ-SEA-9). A vessel
+  //   whose origin is G metres astern of the reference sees the wave envelope
+  //   with theta = k G cos mu, as its first-order forces do (EQ-SEA-8).
   // Every vector must have plan.components().size() entries.
   DaySynthesizer(RecordPlan plan, const std::vector<std::vector<std::complex<double>>>& linear_transfer,
-                 const std::vector<std::vector<double>>& drift_coefficient);
+                 const std::vector<std::vector<double>>& drift_coefficient,
+                 const std::vector<std::vector<double>>& drift_phase_rad = {});
   ~DaySynthesizer();
   DaySynthesizer(DaySynthesizer&&) noexcept;
   DaySynthesizer& operator=(DaySynthesizer&&) noexcept;

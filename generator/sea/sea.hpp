@@ -82,6 +82,11 @@
 //           sum_j a_j^2 D_j = 2 int D S dw is the mean added resistance (thesis
 //           eq. 2.2), already inside the mean tension. E = p + i q is built from
 //           two c2r transforms (p = Re E, q = Im E): cheaper than one c2c here.
+//           A series that acts at a point other than the reference origin
+//           (the tow, G astern of the tug) uses the envelope there:
+//             E(t)  = sum_j a_j sqrt(D(w_j)) exp(i (w_e,j t + phi_j + theta_j)),
+//           theta_j = k_j G cos mu, the phase of EQ-SEA-8's H of that point
+//           (thesis eq. 3-21); conjugated with phi_j when w_e,j < 0.
 //
 // NOTES FOR CALLERS
 //   * Cost: per case, RecordPlan + DaySynthesizer (O(J) spectrum integrals, one

@@ -375,6 +375,12 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
   // Transfer functions per component (EQ-COUPLED-4: the tow's lag applied here).
   std::vector<std::vector<Complex>> linear(kLinearCount, std::vector<Complex>(comps.size()));
   std::vector<std::vector<double>> drift(kDriftCount, std::vector<double>(comps.size(), 0.0));
+  // EQ-CASE-2: where each second-order series acts. The tug's origin is the
+  // reference. The thesis drives both vessels' slowly varying forces with one
+  // envelope (the default); with options.tow_drift_at_tow the tow's is the
+  // envelope at the tow, G astern, phase k G cos mu per component (thesis
+  // eq. 3-21's lag, as its first-order force has).
+  std::vector<std::vector<double>> drift_phase(kDriftCount, std::vector<double>(comps.size(), 0.0));
   m->h_f1_tug.resize(comps.size());
   m->h_f1_tow.resize(comps.size());
   m->h_xi_ns.resize(comps.size());
@@ -395,9 +401,12 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
     if (options.second_order_forces) {
       drift[kF2Tug][j] = interpolate(g.omega, g.drift_tug, c.omega_rad_s);
       drift[kF2Tow][j] = interpolate(g.omega, g.drift_tow, c.omega_rad_s);
+      if (options.tow_drift_at_tow) {
+        drift_phase[kF2Tow][j] = c.wavenumber_rad_m * geometry.separation_m * std::cos(c.heading_rad);
+      }
     }
   }
-  m->synthesizer = std::make_unique<sea::DaySynthesizer>(plan, linear, drift);
+  m->synthesizer = std::make_unique<sea::DaySynthesizer>(plan, linear, drift, drift_phase);
   r.fft_plan_from_stored_wisdom = m->synthesizer->plan_from_stored_wisdom();
 
   m->surge.tug_mass_kg = tug.hull.displacement_kg * (1.0 + tug.hull.surge_added_mass_ratio);

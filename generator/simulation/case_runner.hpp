@@ -26,7 +26,11 @@
 // Transfer functions are computed on a frequency grid and interpolated
 // linearly in frequency onto the record's components; the phase lag of the
 // tow, exp(i k G cos mu), is applied per component (coupled EQ-COUPLED-4),
-// so only smooth functions are interpolated.
+// so only smooth functions are interpolated. With
+// CaseOptions::tow_drift_at_tow (a diagnostic, off as in the thesis) the same
+// lag places the tow's slowly varying force in the wave envelope at the tow
+// (EQ-CASE-2 in case_runner.cpp, sea EQ-SEA-9): wave groups then reach tug
+// and tow one group travel time apart, not at once.
 // Days are independent (each its own warm-up, simulation/surge.hpp) and run in
 // parallel; the result depends only on the inputs and the seed, bit-identical
 // for any thread count.
@@ -77,6 +81,13 @@ struct CaseOptions {
   towline::AboveBreakingModel above_breaking = towline::AboveBreakingModel::kPolynomial;  // thesis default
   TensionLaw tension_law = TensionLaw::kPolynomial;
   bool second_order_forces = true;     // Newman slowly varying surge forces (thesis: on)
+  // Diagnostic (issue 17), off as in the thesis: build the tow's slowly
+  // varying force from the wave envelope at the tow, G astern (EQ-CASE-2),
+  // instead of the envelope both vessels share in sapc97 (physics notes
+  // section 8: one envelope, f2_k = -|sum a_j sqrt(D_k) exp(i(w_e t + phi_j))|^2).
+  // Physically the groups reach the tow later, but with the lag the head-sea
+  // tensions move further from the thesis (docs/validation.md, "Issue 17").
+  bool tow_drift_at_tow = false;
   seakeeping::ResponseOptions response;  // strip theory
   // Absolute-frequency grid of the transfer functions: uniform on [lo, hi],
   // independent of the sea so that responses are shared between cases

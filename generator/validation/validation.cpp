@@ -146,6 +146,7 @@ simulation::CaseOptions case_options(const RunOptions& options) {
   o.response_frequencies = options.response_frequencies;
   o.second_order_forces = options.second_order_forces;
   o.wave_surge_damping = options.wave_surge_damping;
+  o.tow_drift_at_tow = options.tow_drift_at_tow;
   if (options.thesis_towline_fit) {
     o.towline.hold_static_stiffness = false;
     o.towline.run_weight_exponent = 0.0;

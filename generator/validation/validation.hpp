@@ -70,6 +70,9 @@ struct RunOptions {
   // The thesis's towline fit (t3fer97: a10 fitted, plain least squares)
   // instead of EQ-TOWLINE-16's small-motion fit.
   bool thesis_towline_fit = false;
+  // The tow's slowly varying force from the envelope at the tow
+  // (CaseOptions::tow_drift_at_tow) instead of the thesis's shared envelope.
+  bool tow_drift_at_tow = false;
   void validate() const;
 };
 

@@ -64,8 +64,10 @@ double direct_linear(const RecordPlan& plan, const std::vector<Complex>& h, cons
   return sum;
 }
 
-// EQ-SEA-9 by direct summation.
-double direct_drift(const RecordPlan& plan, const std::vector<double>& d, const std::vector<double>& phase, double t) {
+// EQ-SEA-9 by direct summation (theta: the series' phase of each component,
+// empty = 0; it enters like phi).
+double direct_drift(const RecordPlan& plan, const std::vector<double>& d, const std::vector<double>& phase, double t,
+                    const std::vector<double>& theta = {}) {
   Complex e = 0.0;
   double mean = 0.0;
   const auto& comps = plan.components();
@@ -73,7 +75,7 @@ double direct_drift(const RecordPlan& plan, const std::vector<double>& d, const 
     const double sign = comps[j].negative_encounter ? -1.0 : 1.0;
     const double w = sign * static_cast<double>(comps[j].bin) * plan.bin_omega_rad_s();
     const double b = comps[j].amplitude_m * std::sqrt(d[j]);
-    e += b * std::polar(1.0, w * t + phase[j]);
+    e += b * std::polar(1.0, w * t + phase[j] + (theta.empty() ? 0.0 : theta[j]));
     mean += b * b;
   }
   return mean - std::norm(e);
@@ -187,6 +189,46 @@ TEST(SeaRecord, FftMatchesDirectSummationIncludingNegativeEncounter) {
     EXPECT_ABS_CLOSE(ws.drift(0)[static_cast<std::size_t>(n)], direct_drift(plan, d, phase, t),
                      kDirectSumRelTol * drift_scale);
   }
+}
+
+TEST(SeaRecord, DriftPhaseMatchesDirectSummationIncludingNegativeEncounter) {
+  // EVIDENCE-OF: EQ-SEA-9
+  // A vessel G astern of the reference sees each component with the phase
+  // theta = k G cos mu (EQ-SEA-8, thesis eq. 3-21); its envelope E, hence its
+  // slowly varying force, is built with phi_j + theta_j. Following quartering
+  // seas (all three branches, w_e < 0 included): FFT = direct sum to rounding,
+  // and the lagged record differs from the unlagged one.
+  constexpr double kDirectSumRelTol = 1e-9;
+  constexpr double kSeparation_m = 600.0;
+  RecordOptions opt;
+  opt.duration_s = 900.0;
+  const Spectrum js = Spectrum::jonswap(3.0, 9.0, 3.3);
+  const double mu = units::deg_to_rad(20.0);
+  const RecordPlan plan(single_system(js, mu), units::kt_to_m_s(9.0), opt);
+  ASSERT_TRUE(std::any_of(plan.components().begin(), plan.components().end(),
+                          [](const WaveComponent& c) { return c.negative_encounter; }));
+  std::vector<double> d(plan.components().size()), theta(plan.components().size());
+  RandomStream r(9, 9);
+  for (double& x : d) x = 1.0e3 * r.uniform01();
+  for (std::size_t j = 0; j < theta.size(); ++j) {
+    theta[j] = plan.components()[j].wavenumber_rad_m * kSeparation_m * std::cos(mu);
+  }
+  DaySynthesizer synth(plan, {}, {d, d}, {std::vector<double>(d.size(), 0.0), theta});
+  auto ws = synth.make_workspace();
+  synth.synthesize(2024, 7, ws);
+  std::vector<double> phase(plan.components().size());
+  draw_phases(2024, 7, phase);
+  const double scale = synth.drift_mean(1);
+  EXPECT_EQ(synth.drift_mean(0), synth.drift_mean(1));  // the lag moves the force, not its mean
+  double max_diff = 0.0;
+  for (std::int64_t n = 0; n < plan.samples(); n += plan.samples() / 23) {
+    const double t = static_cast<double>(n) * plan.time_step_s();
+    const auto i = static_cast<std::size_t>(n);
+    EXPECT_ABS_CLOSE(ws.drift(0)[i], direct_drift(plan, d, phase, t), kDirectSumRelTol * scale);
+    EXPECT_ABS_CLOSE(ws.drift(1)[i], direct_drift(plan, d, phase, t, theta), kDirectSumRelTol * scale);
+    max_diff = std::max(max_diff, std::abs(ws.drift(1)[i] - ws.drift(0)[i]));
+  }
+  EXPECT_GT(max_diff, 0.1 * scale);
 }
 
 TEST(SeaRecord, StoredPlanOfADayMatchesDirectSummation) {

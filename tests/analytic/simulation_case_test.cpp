@@ -14,9 +14,21 @@
 //           the breaking strength equal each day simulated alone, and the
 //           lanes of the fastest vectors (AVX2 where the processor has it)
 //           equal the baseline's.
+//   case-5  with CaseOptions::tow_drift_at_tow (a diagnostic; the thesis
+//           shares one envelope, and then the lag is 0) the tow's slowly
+//           varying surge force is built from the wave envelope at the tow,
+//           G astern of the tug (thesis eq. 3-21: the
+//           tow's wave elevation is the tug's times exp(i k G cos mu)), so in
+//           head seas the wave groups, hence the second-order forces, reach
+//           the tow one group-travel time G / (c_g + U) after the tug
+//           (Newman 1974: the slowly varying force follows the local envelope).
+#include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -166,6 +178,61 @@ TEST(SimulationCase, StraightSpringLanesEqualSingleDays) {  // case-4
     if (in.mean_tension_n + alone.max_tension_n > r.towline.breaking_strength_n) ++above;
   }
   EXPECT_GT(above, 0);  // the premise: the spring branch was taken
+}
+
+// The lag [s] at which the tug's and the tow's slowly varying forces (the
+// forces with the second-order records minus those without: the first-order
+// records are the same in both, same seed and day) correlate best, searched
+// over +-max_lag_s; and G [m].
+std::pair<double, double> drift_force_lag_s(const CaseInputs& in, bool tow_drift_at_tow, double max_lag_s) {
+  CaseOptions with = quick_options(), without = quick_options();
+  with.num_threads = without.num_threads = 1;
+  with.tow_drift_at_tow = without.tow_drift_at_tow = tow_drift_at_tow;
+  without.second_order_forces = false;
+  const double g_m = run_case(in, with).separation_m;  // G, tug origin to tow origin
+  const DayForcing a = day_forcing(*prepare_case(in, with), in.seed, 0);
+  const DayForcing b = day_forcing(*prepare_case(in, without), in.seed, 0);
+  const std::size_t n = a.size();
+  std::vector<double> f2_tug(n), f2_tow(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    f2_tug[i] = a.tug_force_n[i] - b.tug_force_n[i];
+    f2_tow[i] = a.tow_force_n[i] - b.tow_force_n[i];
+  }
+  const auto max_lag = static_cast<std::ptrdiff_t>(max_lag_s / a.dt_s);
+  std::ptrdiff_t best_lag = 0;
+  double best = -1.0e300;
+  for (std::ptrdiff_t lag = -max_lag; lag <= max_lag; ++lag) {  // the records are periodic
+    double c = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto j = static_cast<std::size_t>((static_cast<std::ptrdiff_t>(i) + lag + static_cast<std::ptrdiff_t>(n)) %
+                                              static_cast<std::ptrdiff_t>(n));
+      c += f2_tug[i] * f2_tow[j];
+    }
+    if (c > best) {
+      best = c;
+      best_lag = lag;
+    }
+  }
+  return {static_cast<double>(best_lag) * a.dt_s, g_m};
+}
+
+TEST(SimulationCase, TowDriftForceLagsTheTugsByTheGroupTravelTime) {  // case-5, EVIDENCE-OF: EQ-SEA-9
+  // Head seas, T-ATF / FFG 7 on 2,000 ft of wire, 9 kt, PM 20 kt.
+  const CaseInputs in = frigate_case(180.0, 3);
+  // Expected delay: deep-water group velocity g / (2 w_p) at the PM peak
+  // w_p = 0.877 g / U_wind (sea EQ-SEA-1), relative to a ship meeting the groups at U.
+  const double w_p = 0.877 * kGravity_m_s2 / units::kt_to_m_s(20.0);
+  const double g_m = drift_force_lag_s(in, false, 0.0).second;
+  const double expected_s = g_m / (kGravity_m_s2 / (2.0 * w_p) + in.speed_m_s);
+  // The spectrum is broad (groups disperse, and each vessel weights it by its
+  // own drift operator): the peak must sit at the group delay within +-50 %,
+  // and in any case not at zero (both vessels forced at once).
+  constexpr double kGroupDelayRelTol = 0.5;
+  const double measured_s = drift_force_lag_s(in, true, 3.0 * expected_s).first;
+  EXPECT_GT(measured_s, (1.0 - kGroupDelayRelTol) * expected_s) << "expected " << expected_s << " s";
+  EXPECT_LT(measured_s, (1.0 + kGroupDelayRelTol) * expected_s) << "expected " << expected_s << " s";
+  // The thesis's shared envelope (default): both vessels at once.
+  EXPECT_EQ(drift_force_lag_s(in, false, 3.0 * expected_s).first, 0.0);
 }
 
 }  // namespace
