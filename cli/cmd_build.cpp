@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
+#include "database_basis.hpp"
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
 #include "output.hpp"
@@ -158,13 +159,8 @@ int run_dry(const Context& ctx, const BuildArgs& a, const sweep::SweepFile& file
   return 0;
 }
 
-// The physics options of a database build: the case options of the runner
-// registered in main() (one thread per case: the build runs cases in parallel).
-simulation::CaseOptions build_case_options() {
-  simulation::CaseOptions o;
-  o.num_threads = 1;
-  return o;
-}
+// The physics options of a database build are build_case_options()
+// (database_basis.hpp): the case options of the runner registered in main().
 
 sweep::ExpandOptions expand_options() {
   sweep::ExpandOptions e;
