@@ -51,6 +51,7 @@ void add_export_command(CLI::App& app, Context& ctx);
 void add_towline_command(CLI::App& app, Context& ctx);
 void add_vessel_command(CLI::App& app, Context& ctx);
 void add_validate_command(CLI::App& app, Context& ctx);  // thesis Appendix C comparison
+void add_audit_command(CLI::App& app, Context& ctx);     // database answers vs direct simulation
 
 }  // namespace towdb::cli
 

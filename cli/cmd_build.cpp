@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
+#include "database_basis.hpp"
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
 #include "output.hpp"
@@ -158,13 +159,8 @@ int run_dry(const Context& ctx, const BuildArgs& a, const sweep::SweepFile& file
   return 0;
 }
 
-// The physics options of a database build: the case options of the runner
-// registered in main() (one thread per case: the build runs cases in parallel).
-simulation::CaseOptions build_case_options() {
-  simulation::CaseOptions o;
-  o.num_threads = 1;
-  return o;
-}
+// The physics options of a database build are build_case_options()
+// (database_basis.hpp): the case options of the runner registered in main().
 
 sweep::ExpandOptions expand_options() {
   sweep::ExpandOptions e;
@@ -210,6 +206,38 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
   return (s.failed > 0 || s.interrupted) ? 1 : 0;
 }
 
+// meta.last_audit as JSON (null when the database was never audited).
+ordered_json last_audit_json(const sweep::StatusReport& r) {
+  if (!r.last_audit) return nullptr;
+  ordered_json j = ordered_json::parse(*r.last_audit, nullptr, false);
+  return j.is_discarded() ? ordered_json(*r.last_audit) : j;  // not JSON: shown as the stored text
+}
+
+std::string percent_or_dash(const ordered_json& v) { return v.is_number() ? fmt(100.0 * v.get<double>(), 1) + " %" : "-"; }
+
+// The stored summary of the last `towdb audit`: how far to trust the answers.
+void print_last_audit(const sweep::StatusReport& r) {
+  const ordered_json a = last_audit_json(r);
+  std::cout << "\nlast audit (towdb audit: database answers vs direct simulation): ";
+  if (!a.is_object()) {
+    std::cout << (r.last_audit ? "unreadable meta.last_audit" : "never audited") << "\n";
+    return;
+  }
+  const ordered_json& d = a.value("dynamic_999", ordered_json::object());
+  const ordered_json& c = a.value("uncertainty_covers_error", ordered_json::object());
+  std::cout << a.value("utc", std::string("?")) << ", " << a.value("draws", 0) << " questions, "
+            << a.value("days", 0) << " days each\n";
+  TextTable t({"measure", "value"});
+  t.add_row({"answered without extrapolation", std::to_string(a.value("answered", 0)) + " of " +
+                                                   std::to_string(a.value("draws", 0))});
+  t.add_row({"median / 90th pct / worst error (dynamic 0.001/day)",
+             percent_or_dash(d.value("median_rel_error", ordered_json())) + " / " +
+                 percent_or_dash(d.value("p90_rel_error", ordered_json())) + " / " +
+                 percent_or_dash(d.value("max_rel_error", ordered_json()))});
+  t.add_row({"printed +/- covers the error", percent_or_dash(c.value("fraction", ordered_json()))});
+  t.print(std::cout);
+}
+
 int run_status(const std::string& db, bool json) {
   const sweep::StatusReport r = sweep::read_status(db);
   if (json) {
@@ -237,6 +265,7 @@ int run_status(const std::string& db, bool json) {
       j["failed_cases"].push_back({{"case_id", f.case_id}, {"sweep_label", f.sweep_label}, {"tug", f.tug},
                                    {"tow", f.tow}, {"error_message", f.error_message}});
     }
+    j["last_audit"] = last_audit_json(r);
     std::cout << j.dump(2) << "\n";
     return 0;
   }
@@ -267,6 +296,7 @@ int run_status(const std::string& db, bool json) {
     }
     failed.print(std::cout);
   }
+  print_last_audit(r);
   return 0;
 }
 

@@ -3,6 +3,8 @@
 //
 //   towdb query --db F --tug T --tow W --speed-kt V --wind-kt U --heading-deg H
 //               --line wire|fiber --length-ft L [--mean-tension-lbf M]
+//               (without M: the calculated mean tension of this speed, wind and
+//               heading, computed as the database's build did; database_basis.hpp)
 //               [--probability P] [--tow-days D] [--extrapolate] [--brake] [--json|--csv]
 //   towdb query --db F --batch [--json]     CSV queries on stdin, header = flag names
 //   towdb query --db F --leave-one-out      interpolation error of the database
@@ -13,6 +15,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,6 +24,8 @@
 
 #include "cli.hpp"
 #include "common/error.hpp"
+#include "common/units.hpp"
+#include "database_basis.hpp"
 #include "output.hpp"
 #include "towdb/query.hpp"
 
@@ -218,6 +223,101 @@ std::string csv_row(const QueryRequest& rq, const QueryResult* r, const std::str
   return s;
 }
 
+// ---- default mean tension ------------------------------------------------------
+
+// The mean tension of a question asked without one: the calculated value of
+// its own speed, wind and heading on the database's basis when the database
+// records one, else the query library's default (each node's highest stored
+// mean tension), with the reason.
+struct MeanDefault {
+  bool calculated = false;
+  std::optional<DatabaseBasis> basis;
+  CalculatedMeanTension tension;
+  std::string reason;  // why the library default is used instead (when !calculated)
+};
+
+// Looks the basis up once per command and the ship files once, on first use.
+class MeanDefaults {
+ public:
+  MeanDefaults(const Context& ctx, std::string db) : ctx_(ctx), db_(std::move(db)) {}
+
+  MeanDefault for_question(const QueryArgs& a) {
+    MeanDefault d;
+    if (!lookup_) lookup_ = read_database_basis(db_);
+    if (!lookup_->basis) {
+      d.reason = lookup_->reason;
+      return d;
+    }
+    if (std::isnan(a.wind_kt)) {
+      d.reason = "the question gives a wave height, not a wind: the calculated mean tension needs a wind speed";
+      return d;
+    }
+    if (!catalog_) catalog_ = load_catalog(ctx_);
+    d.tension = calculated_mean_tension(*lookup_->basis, *catalog_, db_, a.tow, a.speed_kt, a.wind_kt, a.heading_deg);
+    if (!(d.tension.total_lbf > 0.0)) {
+      throw InputError("--mean-tension-lbf not given, and the calculated mean tension at --speed-kt " +
+                       fmt(a.speed_kt) + ", --wind-kt " + fmt(a.wind_kt) + ", --heading-deg " + fmt(a.heading_deg) +
+                       " is " + fmt(d.tension.total_lbf, 0) +
+                       " lbf (wind and sea push the tow); allowed: a positive mean tension, give --mean-tension-lbf");
+    }
+    d.calculated = true;
+    d.basis = lookup_->basis;
+    return d;
+  }
+
+ private:
+  const Context& ctx_;
+  std::string db_;
+  std::optional<BasisLookup> lookup_;
+  std::optional<io::ShipCatalog> catalog_;
+};
+
+ordered_json mean_default_json(const MeanDefault& d) {
+  ordered_json j;
+  if (!d.calculated) {
+    j["method"] = "node_highest_stored";
+    j["reason"] = d.reason;
+    return j;
+  }
+  j["method"] = "calculated";
+  j["basis"] = basis_json(*d.basis);
+  j["breakdown"] = breakdown_json(d.tension);
+  if (!d.tension.ship_file_note.empty()) j["note"] = d.tension.ship_file_note;
+  return j;
+}
+
+void print_mean_default(const MeanDefault& d) {
+  if (!d.calculated) {
+    std::cout << "\nmean tension: not given; each stored node's highest mean tension is used, because no calculated "
+                 "default is available: "
+              << d.reason << "\n";
+    return;
+  }
+  const propulsion::MeanTensionBreakdown& b = d.tension.breakdown;
+  std::cout << "\nmean tension: not given; the calculated mean tension of this speed, wind and heading, as the "
+               "database's build computes it ("
+            << basis_text(*d.basis) << ")\n";
+  TextTable t({"component", "lbf"});
+  t.add_row({"hull", fmt_grouped(units::n_to_lbf(b.hull_n))});
+  t.add_row({"propeller", fmt_grouped(units::n_to_lbf(b.propeller_n))});
+  t.add_row({"wind (relative " + fmt(units::m_s_to_kt(b.relative_wind_m_s), 1) + " kt)",
+             fmt_grouped(units::n_to_lbf(b.wind_n))});
+  t.add_row({"sea", fmt_grouped(units::n_to_lbf(b.sea_n))});
+  t.add_row({"tow resistance", fmt_grouped(units::n_to_lbf(b.tow_resistance_n))});
+  t.add_row({"towline", fmt_grouped(units::n_to_lbf(b.towline_n))});
+  t.add_row({"total", fmt_grouped(d.tension.total_lbf)});
+  t.print(std::cout);
+  if (!d.tension.ship_file_note.empty()) std::cout << "note: " << d.tension.ship_file_note << "\n";
+}
+
+// Fills a missing mean tension; returns what was done (nullopt: it was given).
+std::optional<MeanDefault> apply_mean_default(MeanDefaults& defaults, const QueryArgs& a, QueryRequest* rq) {
+  if (!std::isnan(a.mean_tension_lbf)) return std::nullopt;
+  MeanDefault d = defaults.for_question(a);
+  if (d.calculated) rq->values.mean_tension_lbf = d.tension.total_lbf;
+  return d;
+}
+
 void print_text(const QueryRequest& rq, const QueryResult& r, bool on_brake) {
   const towdb_query_result& v = r.values;
   const towdb_query_request& q = rq.values;
@@ -286,7 +386,7 @@ std::vector<std::string> split_csv_line(const std::string& line) {
   return cells;
 }
 
-int run_batch(query::Database& db, const QueryArgs& defaults) {
+int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean_defaults) {
   std::string line;
   int line_no = 0;
   std::vector<std::string> header;
@@ -345,11 +445,18 @@ int run_batch(query::Database& db, const QueryArgs& defaults) {
       if (h == "extrapolate") a.extrapolate = x != 0.0;
       if (h == "brake") a.brake = x != 0.0;
     }
-    const QueryRequest rq = to_request(a);
+    QueryRequest rq = to_request(a);
     try {
+      std::optional<MeanDefault> mean_default;
+      try {
+        mean_default = apply_mean_default(mean_defaults, a, &rq);
+      } catch (const InputError& e) {
+        throw QueryError(TOWDB_QUERY_INPUT, e.what());  // reported on its row like any bad row
+      }
       const QueryResult r = db.query(rq);
       if (defaults.json) {
         all.push_back(result_json(rq, r, a.brake));
+        if (mean_default) all.back()["mean_tension_default"] = mean_default_json(*mean_default);
       } else {
         std::cout << csv_row(rq, &r, "") << "\n";
       }
@@ -415,21 +522,35 @@ int run_loo(query::Database& db, bool json) {
 
 // ---- commands ----------------------------------------------------------------
 
-int run_query(const QueryArgs& a) {
+int run_query(const Context& ctx, const QueryArgs& a) {
   if (a.json && a.csv) throw InputError("--json and --csv: choose one output format");
   try {
     query::Database db(a.db, space_code(a.space));
     if (a.loo) return run_loo(db, a.json);
-    if (a.batch) return run_batch(db, a);
+    MeanDefaults mean_defaults(ctx, a.db);
+    if (a.batch) return run_batch(db, a, mean_defaults);
     require_flags(a, true, true);
-    const QueryRequest rq = to_request(a);
-    const QueryResult r = db.query(rq);
+    QueryRequest rq = to_request(a);
+    const std::optional<MeanDefault> mean_default = apply_mean_default(mean_defaults, a, &rq);
+    QueryResult r;
+    try {
+      r = db.query(rq);
+    } catch (const QueryError& e) {
+      // Name the mean tension the user did not give, and where it came from.
+      if (!mean_default || !mean_default->calculated || !e.is_input()) throw;
+      throw InputError("no --mean-tension-lbf given; the calculated mean tension of this speed, wind and heading is " +
+                       fmt_grouped(mean_default->tension.total_lbf) + " lbf (" + basis_text(*mean_default->basis) +
+                       "): " + e.what());
+    }
     if (a.json) {
-      std::cout << result_json(rq, r, a.brake).dump(2) << "\n";
+      ordered_json j = result_json(rq, r, a.brake);
+      if (mean_default) j["mean_tension_default"] = mean_default_json(*mean_default);
+      std::cout << j.dump(2) << "\n";
     } else if (a.csv) {
       std::cout << kCsvHeader << "\n" << csv_row(rq, &r, "") << "\n";
     } else {
       print_text(rq, r, a.brake);
+      if (mean_default) print_mean_default(*mean_default);
     }
     return 0;
   } catch (const QueryError& e) {
@@ -502,7 +623,10 @@ void add_common_options(CLI::App* c, QueryArgs& a, bool speed, bool length) {
     c->add_option("--length-ft", a.length_ft, "Towline (hawser) length [ft]")->check(number_in(0.0, kInf, true, true));
   }
   c->add_option("--mean-tension-lbf", a.mean_tension_lbf,
-                "Mean towline tension [lbf] (default: each grid node's highest stored mean tension)")
+                speed && length
+                    ? "Mean towline tension [lbf] (default: the calculated mean tension of this speed, wind and "
+                      "heading on the database's own basis; without one, each grid node's highest stored value)"
+                    : "Mean towline tension [lbf] (default: each grid node's highest stored mean tension)")
       ->check(number_in(0.0, kInf, true, true));
   c->add_option("--probability", a.probability,
                 "Exceedance probability of the tow's maximum dynamic tension (default 0.001)")
@@ -526,7 +650,7 @@ void add_query_commands(CLI::App& app, Context& ctx) {
               "Read many queries as CSV from stdin; header names as the flags: "
               "tug,tow,speed_kt,wind_kt,heading_deg,line,length_ft,mean_tension_lbf[,probability,tow_days,...]");
   q->add_flag("--leave-one-out", qa->loo, "Report the database's leave-one-out interpolation error and exit");
-  q->callback([&ctx, qa] { ctx.action = [qa] { return run_query(*qa); }; });
+  q->callback([&ctx, qa] { ctx.action = [&ctx, qa] { return run_query(ctx, *qa); }; });
 
   auto sa = std::make_shared<QueryArgs>();
   CLI::App* s = app.add_subcommand("max-speed", "Highest tow speed that passes the Navy Towing Manual checks");

@@ -63,6 +63,10 @@ StatusReport read_status(const std::filesystem::path& db_path, int max_builds, i
                           st.column_text(4)});
     }
   }
+  {
+    store::Statement st = db.prepare("SELECT value FROM meta WHERE key = 'last_audit'");
+    if (st.step()) r.last_audit = st.column_text(0);
+  }
   return r;
 }
 

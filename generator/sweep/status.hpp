@@ -45,6 +45,7 @@ struct StatusReport {
   std::optional<double> total_runtime_s;  // sum of results.runtime_s
   std::vector<BuildRecord> builds;        // newest first, at most `max_builds`
   std::vector<FailedCase> failed;         // at most `max_failed`, by case_id
+  std::optional<std::string> last_audit;   // meta.last_audit: the JSON summary `towdb audit` stored
 };
 
 StatusReport read_status(const std::filesystem::path& db_path, int max_builds = 10, int max_failed = 20);

@@ -1,0 +1,301 @@
+// towdb audit: the database's answers between its stored cases against
+// direct simulation (audit.hpp), as a table, JSON and a PNG; the summary is
+// stored in the database's meta table (key last_audit, schema/README.md) so
+// that `towdb status` shows how far to trust the database.
+//
+//   towdb audit --db FILE --draws N [--seed S] [--days D] [--threads T]
+//               [--json] [--plot FILE.png] [--no-store]
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "audit.hpp"
+#include "cli.hpp"
+#include "common/error.hpp"
+#include "common/version.hpp"
+#include "output.hpp"
+#include "plot.hpp"
+#include "store/database.hpp"
+
+namespace towdb::cli {
+
+namespace {
+
+using nlohmann::ordered_json;
+
+constexpr int kMaxDraws = 100000;
+
+struct AuditArgs {
+  std::string db;
+  int draws = 0;
+  std::uint64_t seed = 1;
+  int days = 0;  // 0: the database's own
+  int threads = 0;
+  bool json = false;
+  bool no_store = false;
+  std::string plot;
+};
+
+ordered_json nullable(double v) { return std::isfinite(v) ? ordered_json(v) : ordered_json(nullptr); }
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+// Refused before any work: the summary could not be stored afterwards.
+void require_writable(const std::string& db) {
+  namespace fs = std::filesystem;
+  const fs::path p(db);
+  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  if (access(p.c_str(), W_OK) != 0 || access(dir.c_str(), W_OK) != 0) {
+    throw InputError("--db " + db +
+                     ": the database is read-only (the file or its folder cannot be written); the audit stores its "
+                     "summary in the database's meta table (key last_audit). Make it writable, or add --no-store to "
+                     "audit without storing");
+  }
+}
+
+ordered_json stats_json(const ErrorStats& s) {
+  return {{"samples", s.samples},
+          {"median_rel_error", nullable(s.median)},
+          {"p90_rel_error", nullable(s.p90)},
+          {"max_rel_error", nullable(s.max)},
+          {"worst_question", s.worst_index >= 0 ? ordered_json(s.worst_index) : ordered_json(nullptr)}};
+}
+
+// The summary: the JSON's "summary" object and the stored meta value.
+ordered_json summary_json(const AuditSummary& s, const AuditOptions& o, const std::string& mean_tension_method) {
+  ordered_json j;
+  j["draws"] = s.draws;
+  j["seed"] = o.seed;
+  j["days"] = o.days;
+  j["mean_tension"] = mean_tension_method;
+  j["answered"] = s.answered;
+  j["not_answered"] = s.not_answered;
+  j["simulation_failed"] = s.simulation_failed;
+  j["quantity"] = "dynamic tension exceeded with probability 0.001 in one day (dynamic_999_kips)";
+  j["dynamic_999"] = stats_json(s.dynamic_999);
+  j["extreme_tension"] = stats_json(s.extreme);
+  j["uncertainty_covers_error"] = {{"covered", s.covered}, {"fraction", nullable(s.coverage)}};
+  j["extrapolated_dynamic_999"] = stats_json(s.extrapolated_999);
+  return j;
+}
+
+ordered_json question_json(const AuditOutcome& o) {
+  const AuditQuestion& q = o.q;
+  ordered_json j;
+  j["index"] = q.index;
+  j["tug"] = q.tug;
+  j["tow"] = q.tow;
+  j["line"] = q.line;
+  j["speed_kt"] = q.speed_kt;
+  j["wind_kt"] = q.wind_kt;
+  j["heading_deg"] = q.heading_deg;
+  j["length_ft"] = q.length_ft;
+  j["mean_tension_lbf"] = q.mean_tension_lbf;
+  j["seed"] = q.seed;
+  j["answered"] = o.answered;
+  if (!o.answered) j["refusal"] = o.refusal;
+  j["answer_999_kips"] = o.answered ? nullable(o.answer_999_kips) : ordered_json(nullptr);
+  j["uncertainty_kips"] = o.answered ? nullable(o.uncertainty_kips) : ordered_json(nullptr);
+  j["extrapolated_999_kips"] = nullable(o.extrapolated_999_kips);
+  j["simulated"] = o.simulated;
+  if (!o.simulation_error.empty()) j["simulation_error"] = o.simulation_error;
+  j["simulated_999_kips"] = nullable(o.simulated_999_kips);
+  j["simulated_ci_kips"] = {nullable(o.simulated_ci_low_kips), nullable(o.simulated_ci_high_kips)};
+  j["rel_error_999"] = nullable(o.rel_error_999);
+  j["rel_error_extreme"] = nullable(o.rel_error_extreme);
+  j["rel_error_extrapolated_999"] = nullable(o.rel_error_extrapolated_999);
+  j["covered"] = o.answered && o.simulated ? ordered_json(o.covered) : ordered_json(nullptr);
+  return j;
+}
+
+std::string pct(double v) { return std::isfinite(v) ? fmt(100.0 * v, 1) + " %" : "-"; }
+std::string kips_or_dash(double v) { return std::isfinite(v) ? fmt(v, 1) : "-"; }
+
+void print_questions(const std::vector<AuditOutcome>& outcomes) {
+  TextTable t({"#", "tug", "tow", "line", "length ft", "speed kt", "wind kt", "heading deg", "mean lbf",
+               "database kips", "+/- kips", "simulated kips", "error", "covered", "extrapolated kips", "error"});
+  for (const AuditOutcome& o : outcomes) {
+    const AuditQuestion& q = o.q;
+    t.add_row({std::to_string(q.index), q.tug, q.tow, q.line, fmt(q.length_ft, 0), fmt(q.speed_kt, 2),
+               fmt(q.wind_kt, 2), fmt(q.heading_deg, 1), fmt_grouped(q.mean_tension_lbf),
+               o.answered ? fmt(o.answer_999_kips, 1) : "refused", o.answered ? fmt(o.uncertainty_kips, 1) : "-",
+               o.simulated ? fmt(o.simulated_999_kips, 1) : "failed", pct(o.rel_error_999),
+               o.answered && o.simulated ? (o.covered ? "yes" : "no") : "-", kips_or_dash(o.extrapolated_999_kips),
+               pct(o.rel_error_extrapolated_999)});
+  }
+  t.print(std::cout);
+}
+
+void print_summary(const AuditSummary& s, const AuditOptions& o, const std::string& mean_text) {
+  std::cout << "\n"
+            << s.draws << " questions (seed " << o.seed << ", " << o.days
+            << " simulated days each; mean tension: " << mean_text << ")\n"
+            << "compared: dynamic tension exceeded with probability 0.001 in one day, and the extreme tension "
+               "(mean + that)\n\n";
+  TextTable t({"measure", "value"});
+  t.add_row({"answered without extrapolation", std::to_string(s.answered) + " of " + std::to_string(s.draws)});
+  t.add_row({"not answered (refused)", std::to_string(s.not_answered)});
+  if (s.simulation_failed > 0) t.add_row({"simulation failed", std::to_string(s.simulation_failed)});
+  t.add_row({"median error, dynamic 0.001/day", pct(s.dynamic_999.median)});
+  t.add_row({"90th percentile error, dynamic", pct(s.dynamic_999.p90)});
+  t.add_row(
+      {"worst error, dynamic",
+       pct(s.dynamic_999.max) +
+           (s.dynamic_999.worst_index >= 0 ? " (question " + std::to_string(s.dynamic_999.worst_index) + ")" : "")});
+  t.add_row({"median / 90th pct / worst error, extreme",
+             pct(s.extreme.median) + " / " + pct(s.extreme.p90) + " / " + pct(s.extreme.max)});
+  t.add_row({"printed +/- covers the error", std::isfinite(s.coverage) ? std::to_string(s.covered) + " of " +
+                                                                             std::to_string(s.dynamic_999.samples) +
+                                                                             " (" + pct(s.coverage) + ")"
+                                                                       : "-"});
+  t.add_row({"with --extrapolate: median / 90th / worst",
+             pct(s.extrapolated_999.median) + " / " + pct(s.extrapolated_999.p90) + " / " +
+                 pct(s.extrapolated_999.max) + " (" + std::to_string(s.extrapolated_999.samples) + " answered)"});
+  t.print(std::cout);
+}
+
+void print_refusals(const std::vector<AuditOutcome>& outcomes) {
+  bool header = false;
+  for (const AuditOutcome& o : outcomes) {
+    if (o.answered && o.simulation_error.empty()) continue;
+    if (!header) std::cout << "\nnot answered or not simulated\n";
+    header = true;
+    if (!o.answered) std::cout << "  question " << o.q.index << ": refused: " << o.refusal << "\n";
+    if (!o.simulation_error.empty())
+      std::cout << "  question " << o.q.index << ": simulation failed: " << o.simulation_error << "\n";
+  }
+}
+
+// Answer against simulation (log-log, with the printed +/-), refused questions
+// at their extrapolated answer, and the error distribution.
+void write_audit_plot(const std::string& png, const std::vector<AuditOutcome>& outcomes) {
+  const auto dir = make_plot_data_dir("towdb-audit");
+  std::vector<double> errors;
+  {
+    std::ofstream a(dir / "answered.dat"), r(dir / "refused.dat");
+    for (const AuditOutcome& o : outcomes) {
+      if (!o.simulated) continue;
+      if (o.answered) {
+        a << o.simulated_999_kips << " " << o.answer_999_kips << " " << o.uncertainty_kips << "\n";
+        errors.push_back(100.0 * o.rel_error_999);
+      } else if (std::isfinite(o.extrapolated_999_kips) && o.extrapolated_999_kips > 0.0) {
+        r << o.simulated_999_kips << " " << o.extrapolated_999_kips << "\n";
+      }
+    }
+    a << "\n";
+    r << "\n";
+    std::sort(errors.begin(), errors.end());
+    std::ofstream c(dir / "cdf.dat");
+    for (std::size_t i = 0; i < errors.size(); ++i)
+      c << errors[i] << " " << (static_cast<double>(i) + 1.0) / static_cast<double>(errors.size()) << "\n";
+    c << "\n";
+  }
+  const std::string d = dir.string();
+  // clang-format off
+  const std::string script =
+      "set terminal pngcairo size 1400,560 font 'sans,11'\n"
+      "set output '" + png + "'\n"
+      "set multiplot layout 1,2\n"
+      "set title 'Database answer vs direct simulation (dynamic tension, 0.001/day)'\n"
+      "set xlabel 'simulated (kips)'\nset ylabel 'database (kips)'\nset grid\nset logscale xy\nset key top left\n"
+      "plot x title 'equal' lw 1 lc 'gray', '" + d + "/answered.dat' using 1:2:3 with yerrorbars pt 7 "
+      "title 'answered, +/- printed', '" + d + "/refused.dat' using 1:2 with points pt 6 "
+      "title 'refused: extrapolated answer'\n"
+      "unset logscale\nset title 'Relative error of the answered questions'\n"
+      "set xlabel 'relative error (%)'\nset ylabel 'fraction of answered questions'\nset yrange [0:1]\n"
+      "plot '" + d + "/cdf.dat' using 1:2 with steps lw 2 title 'empirical distribution'\n"
+      "unset multiplot\n";
+  // clang-format on
+  run_gnuplot_with_data(script, dir);
+}
+
+// One transaction: the summary is stored whole or not at all.
+void store_summary(const std::string& db_path, const ordered_json& summary) {
+  store::Database db = store::Database::open(db_path, store::Database::Mode::kReadWrite);
+  db.transaction([&] {
+    store::Statement st = db.prepare("INSERT OR REPLACE INTO meta (key, value) VALUES ('last_audit', ?)");
+    st.bind(1, summary.dump()).run();
+  });
+}
+
+int run_audit_command(const Context& ctx, const AuditArgs& a) {
+  if (!std::filesystem::is_regular_file(a.db)) throw InputError("--db " + a.db + ": no such database file");
+  if (!a.plot.empty()) check_output_file("--plot", a.plot);
+  if (!a.no_store) require_writable(a.db);
+  const DatabaseSpan span = read_database_span(a.db);
+  const BasisLookup basis = read_database_basis(a.db);
+  const io::ShipCatalog catalog = load_catalog(ctx);
+  AuditOptions o;
+  o.draws = a.draws;
+  o.seed = a.seed;
+  o.days = a.days > 0 ? a.days : span.days;
+  o.threads = a.threads;
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<AuditQuestion> questions = draw_questions(span, basis.basis, catalog, a.db, o);
+  const std::vector<AuditOutcome> outcomes = run_audit(a.db, catalog, questions, o);
+  const AuditSummary s = summarise(outcomes);
+  const double runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const std::string method = basis.basis ? "calculated" : "uniform_in_stored_span";
+  const std::string mean_text = basis.basis ? "calculated, " + basis_text(*basis.basis)
+                                            : "uniform in the stored span (no calculated basis: " + basis.reason + ")";
+  ordered_json summary = summary_json(s, o, method);
+  if (!a.plot.empty()) write_audit_plot(a.plot, outcomes);
+  if (a.json) {
+    ordered_json j;
+    j["database"] = a.db;
+    j["mean_tension_basis"] = basis.basis ? basis_json(*basis.basis) : ordered_json({{"reason", basis.reason}});
+    j["summary"] = summary;
+    j["questions"] = ordered_json::array();
+    for (const AuditOutcome& x : outcomes) j["questions"].push_back(question_json(x));
+    std::cout << j.dump(2) << "\n";
+  } else {
+    print_questions(outcomes);
+    print_refusals(outcomes);
+    print_summary(s, o, mean_text);
+    std::cout << "run time " << fmt(runtime_s, 1) << " s\n";
+  }
+  if (a.no_store) return 0;
+  summary["utc"] = utc_now();
+  summary["code_version"] = kVersion;
+  store_summary(a.db, summary);
+  if (!a.json) std::cout << "summary stored in " << a.db << " (meta key last_audit; shown by towdb status)\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_audit_command(CLI::App& app, Context& ctx) {
+  auto a = std::make_shared<AuditArgs>();
+  CLI::App* c = app.add_subcommand(
+      "audit", "Answer random in-range questions from a database and by direct simulation; report the errors");
+  c->add_option("--db", a->db, "Database file (its meta table receives the summary)")->required();
+  c->add_option("--draws", a->draws, "Number of random questions")->required()->check(CLI::Range(1, kMaxDraws));
+  c->add_option("--seed", a->seed, "Seed of the draws and simulations (default 1)")->check(unsigned_integer());
+  c->add_option("--days", a->days, "Simulated days per question (default: the days of the database's cases)")
+      ->check(CLI::Range(3, 1000000));
+  c->add_option("--threads", a->threads, "Threads simulating questions (default: all cores); no effect on results")
+      ->check(CLI::Range(0, 1024));
+  c->add_flag("--json", a->json, "JSON output");
+  c->add_option("--plot", a->plot, "Write a PNG: answers vs simulation, and the error distribution");
+  c->add_flag("--no-store", a->no_store, "Do not store the summary in the database (e.g. a read-only file)");
+  c->callback([&ctx, a] { ctx.action = [&ctx, a] { return run_audit_command(ctx, *a); }; });
+}
+
+}  // namespace towdb::cli
