@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -25,6 +24,7 @@
 #include "output.hpp"
 #include "plot.hpp"
 #include "store/database.hpp"
+#include "sweep/writer.hpp"
 
 namespace towdb::cli {
 
@@ -46,15 +46,6 @@ struct AuditArgs {
 };
 
 ordered_json nullable(double v) { return std::isfinite(v) ? ordered_json(v) : ordered_json(nullptr); }
-
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
 
 // Refused before any work: the summary could not be stored afterwards.
 void require_writable(const std::string& db) {
@@ -272,7 +263,7 @@ int run_audit_command(const Context& ctx, const AuditArgs& a) {
     std::cout << "run time " << fmt(runtime_s, 1) << " s\n";
   }
   if (a.no_store) return 0;
-  summary["utc"] = utc_now();
+  summary["utc"] = sweep::utc_now();
   summary["code_version"] = kVersion;
   store_summary(a.db, summary);
   if (!a.json) std::cout << "summary stored in " << a.db << " (meta key last_audit; shown by towdb status)\n";

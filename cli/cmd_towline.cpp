@@ -133,6 +133,7 @@ int run_towline(const Context& ctx, const TowlineArgs& a) {
     j["fit_max_error_lbf"] = units::n_to_lbf(s.fit_max_error_n);
     j["rms_tension_lbf"] = units::n_to_lbf(s.rms_tension_n);
     j["small_motion_ratio"] = s.small_motion_ratio;
+    j["run_weight_exponent"] = s.run_weight_exponent;
     j["samples_used"] = s.samples_used;
     j["samples_excluded"] = s.samples_excluded;
     j["fitted_range"] = {{"xi_min_ft", units::m_to_ft(s.fit_xi_min_m)},
@@ -191,7 +192,8 @@ int run_towline(const Context& ctx, const TowlineArgs& a) {
             << s.samples_excluded << " above breaking strength left out\n";
   std::cout << "small motion (" << fmt(units::m_to_ft(towline::kSmallMotionAmplitudeM), 0) << " ft at a "
             << fmt(towline::kSmallMotionPeriodS, 0) << " s period): first harmonic " << fmt(s.small_motion_ratio, 3)
-            << " x static stiffness x amplitude (EQ-TOWLINE-16; quasi-static limit 1)\n";
+            << " x static stiffness x amplitude (EQ-TOWLINE-16; quasi-static limit 1; run weight exponent "
+            << fmt(s.run_weight_exponent, 2) << ")\n";
   std::cout << "fitted range: xi " << fmt(units::m_to_ft(s.fit_xi_min_m), 2) << " to "
             << fmt(units::m_to_ft(s.fit_xi_max_m), 2) << " ft, |xi_dot| up to "
             << fmt(units::m_to_ft(s.fit_xi_dot_max_m_s), 2) << " ft/s (an extrapolation outside)\n";

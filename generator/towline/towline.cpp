@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
@@ -27,7 +28,8 @@ void TowlineFitOptions::validate() const {
   require_in_range("towline_fit.min_elements", min_elements, 4, 1 << 16);
   require_in_range("towline_fit.max_elements", max_elements, 2 * min_elements, 1 << 18);
   require_in_range("towline_fit.resolution_tolerance", resolution_tolerance, 1e-6, 0.5);
-  require_in_range("towline_fit.run_weight_exponent", run_weight_exponent, 0.0, 1.0);
+  require_in_range("towline_fit.max_run_weight_exponent", max_run_weight_exponent, 0.0, 1.0);
+  require_in_range("towline_fit.small_motion_tolerance", small_motion_tolerance, 1e-6, 1.0);
   require_in_range("towline_fit.max_steps_per_period", max_steps_per_period, dynamics.steps_per_period,
                    1 << 20);
 }
@@ -188,6 +190,72 @@ std::vector<double> run_weights(const std::vector<HarmonicRun>& runs, double exp
   return weights;
 }
 
+double small_motion_ratio(const PolynomialCoefficients& c, double static_stiffness_n_m) {
+  return first_harmonic_n(c, kSmallMotionAmplitudeM, 2.0 * std::numbers::pi / kSmallMotionPeriodS) /
+         (static_stiffness_n_m * kSmallMotionAmplitudeM);
+}
+
+struct SmallMotionChoice {
+  PolynomialFit fit;
+  double exponent = 0.0;
+  double ratio = 0.0;  // EQ-TOWLINE-17 over k_s A
+};
+
+// EQ-TOWLINE-16: the least-squares fit subject to |ratio - 1| <= tolerance.
+//  1. The plain fit (a10 free, e = 0), kept when it meets the tolerance.
+//  2. Else, for e = 0, 0.25, ... up to the maximum: the free fit with those
+//     weights, kept if it meets it; else, if the fit with a10 held at k_s
+//     does, a10 is moved from k_s toward the free fit's value as far as the
+//     tolerance allows (bisection), so that the slope departs from what the
+//     runs ask only as much as the limit needs.
+//  3. If no weight meets it, the held fit closest to it.
+// Without hold_static_stiffness: the plain fit (t3fer97).
+SmallMotionChoice fit_small_motion(const std::vector<TensionSample>& samples, const std::vector<HarmonicRun>& runs,
+                                   double static_stiffness_n_m, double max_dynamic_n, double min_dynamic_n,
+                                   const TowlineFitOptions& options) {
+  constexpr double kExponentStep = 0.25;
+  constexpr int kBisections = 30;  // a10 to 1e-9 of |k_s - free a10|
+  const double tol = options.small_motion_tolerance;
+  auto fit_with = [&](double exponent, double a10) {
+    SmallMotionFit small;
+    small.weights = run_weights(runs, exponent);
+    small.fixed_a10_n_m = a10;
+    SmallMotionChoice c;
+    c.fit = fit_polynomial(samples, max_dynamic_n, min_dynamic_n, options.slack_fit, small);
+    c.exponent = exponent;
+    c.ratio = small_motion_ratio(c.fit.coefficients, static_stiffness_n_m);
+    return c;
+  };
+  auto meets = [&](const SmallMotionChoice& c) { return std::abs(c.ratio - 1.0) <= tol; };
+  const double free_a10 = std::numeric_limits<double>::quiet_NaN();
+  SmallMotionChoice plain = fit_with(0.0, free_a10);
+  if (meets(plain) || !options.hold_static_stiffness) return plain;
+  std::optional<SmallMotionChoice> best;
+  for (int k = 0;; ++k) {
+    const double exponent = std::min(k * kExponentStep, options.max_run_weight_exponent);
+    const SmallMotionChoice free_fit = k == 0 ? plain : fit_with(exponent, free_a10);
+    if (meets(free_fit)) return free_fit;
+    SmallMotionChoice held = fit_with(exponent, static_stiffness_n_m);
+    if (meets(held)) {
+      double lo = 0.0, hi = 1.0;  // fraction of the way from k_s to the free a10
+      for (int i = 0; i < kBisections; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        const double a10 = static_stiffness_n_m + mid * (free_fit.fit.coefficients.a10() - static_stiffness_n_m);
+        SmallMotionChoice c = fit_with(exponent, a10);
+        if (meets(c)) {
+          lo = mid;
+          held = std::move(c);
+        } else {
+          hi = mid;
+        }
+      }
+      return held;
+    }
+    if (!best || std::abs(held.ratio - 1.0) < std::abs(best->ratio - 1.0)) best = held;
+    if (exponent >= options.max_run_weight_exponent) return *best;
+  }
+}
+
 }  // namespace
 
 std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towline,
@@ -290,11 +358,10 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
     s.min_dt_s = std::min(s.min_dt_s, r.min_dt_s);
     s.max_dt_s = std::max(s.max_dt_s, r.max_dt_s);
   }
-  SmallMotionFit small;
-  small.weights = run_weights(runs, options.run_weight_exponent);
-  if (options.hold_static_stiffness) small.fixed_a10_n_m = cat.static_stiffness_n_m();
-  const PolynomialFit fit = fit_polynomial(samples, breaking_n - mean_tension_n,
-                                           model->tension_floor_n(), options.slack_fit, small);
+  const SmallMotionChoice chosen =
+      fit_small_motion(samples, runs, cat.static_stiffness_n_m(), breaking_n - mean_tension_n,
+                       model->tension_floor_n(), options);
+  const PolynomialFit& fit = chosen.fit;
 
   // EQ-TOWLINE-13: static extension at which H reaches breaking strength.
   const Catenary at_break = Catenary::solve(towline, points, breaking_n, options.catenary);
@@ -319,9 +386,8 @@ std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towlin
   s.fit_rms_error_n = fit.rms_error_n;
   s.fit_max_error_n = fit.max_error_n;
   s.rms_tension_n = fit.rms_tension_n;
-  s.small_motion_ratio = first_harmonic_n(fit.coefficients, kSmallMotionAmplitudeM,
-                                          2.0 * std::numbers::pi / kSmallMotionPeriodS) /
-                         (s.static_stiffness_n_m * kSmallMotionAmplitudeM);
+  s.small_motion_ratio = chosen.ratio;
+  s.run_weight_exponent = chosen.exponent;
   s.samples_used = fit.samples_used;
   s.samples_excluded = fit.samples_excluded;
   for (const TensionSample& x : samples) {
@@ -373,7 +439,8 @@ std::string cache_key(const model::Towline& towline, const TowPoints& points, do
                    static_cast<double>(o.max_steps_per_period),
                    static_cast<double>(o.slack_fit == SlackFit::kOneSided),
                    static_cast<double>(o.max_elements), o.resolution_tolerance,
-                   static_cast<double>(o.hold_static_stiffness), o.run_weight_exponent}) {
+                   static_cast<double>(o.hold_static_stiffness), o.max_run_weight_exponent,
+                   o.small_motion_tolerance}) {
     append_bits(key, x);
   }
   append_bits(key, static_cast<double>(o.excitation.frequencies_rad_s.size()));

@@ -149,7 +149,7 @@ simulation::CaseOptions case_options(const RunOptions& options) {
   o.tow_drift_at_tow = options.tow_drift_at_tow;
   if (options.thesis_towline_fit) {
     o.towline.hold_static_stiffness = false;
-    o.towline.run_weight_exponent = 0.0;
+    o.towline.max_run_weight_exponent = 0.0;
   }
   return o;
 }

@@ -44,11 +44,12 @@ TEST(TowlineSmallMotion, FirstHarmonicIsTheStaticStiffness) {
       {2000.0, 15000.0, 2.7}, {2000.0, 50000.0, 1.6}, {1000.0, 15000.0, 1.3}, {2000.0, 100000.0, 1.07}};
   TowlineFitOptions thesis;
   thesis.hold_static_stiffness = false;
-  thesis.run_weight_exponent = 0.0;
+  thesis.max_run_weight_exponent = 0.0;
   for (const IssueLine& c : lines) {
     const auto fit = fit_line(c, TowlineFitOptions{});
     const FitSummary& s = fit->summary();
-    EXPECT_EQ(s.coefficients.a10(), s.static_stiffness_n_m);
+    // The fit's own constraint (EQ-TOWLINE-16), tighter than the issue's 10 %.
+    EXPECT_LE(std::abs(s.small_motion_ratio - 1.0), TowlineFitOptions{}.small_motion_tolerance);
     const double direct = first_harmonic_n(s.coefficients, kSmallMotionAmplitudeM,
                                            2.0 * std::acos(-1.0) / kSmallMotionPeriodS) /
                           (s.static_stiffness_n_m * kSmallMotionAmplitudeM);

@@ -85,8 +85,11 @@ TEST(TowlineOptions, SmallMotionFitInputsAreChecked) {
   infinite.fixed_a10_n_m = inf;
   expect_input_error([&] { fit_polynomial(samples, inf, -inf, SlackFit::kTwoSided, infinite); }, "fixed a10");
   TowlineFitOptions options;
-  options.run_weight_exponent = 1.5;
-  expect_input_error([&] { options.validate(); }, "towline_fit.run_weight_exponent");
+  options.max_run_weight_exponent = 1.5;
+  expect_input_error([&] { options.validate(); }, "towline_fit.max_run_weight_exponent");
+  options = {};
+  options.small_motion_tolerance = 0.0;
+  expect_input_error([&] { options.validate(); }, "towline_fit.small_motion_tolerance");
 }
 
 // The cache computes each (towline, points, tension, options) fit once, also
