@@ -190,11 +190,6 @@ std::vector<double> run_weights(const std::vector<HarmonicRun>& runs, double exp
   return weights;
 }
 
-double small_motion_ratio(const PolynomialCoefficients& c, double static_stiffness_n_m) {
-  return first_harmonic_n(c, kSmallMotionAmplitudeM, 2.0 * std::numbers::pi / kSmallMotionPeriodS) /
-         (static_stiffness_n_m * kSmallMotionAmplitudeM);
-}
-
 struct SmallMotionChoice {
   PolynomialFit fit;
   double exponent = 0.0;
@@ -216,9 +211,10 @@ SmallMotionChoice fit_small_motion(const std::vector<TensionSample>& samples, co
   constexpr double kExponentStep = 0.25;
   constexpr int kBisections = 30;  // a10 to 1e-9 of |k_s - free a10|
   const double tol = options.small_motion_tolerance;
-  auto fit_with = [&](double exponent, double a10) {
+  // One weight vector per exponent, shared by its free, held and bisection fits.
+  auto fit_with = [&](double exponent, const std::vector<double>& weights, double a10) {
     SmallMotionFit small;
-    small.weights = run_weights(runs, exponent);
+    small.weights = weights;
     small.fixed_a10_n_m = a10;
     SmallMotionChoice c;
     c.fit = fit_polynomial(samples, max_dynamic_n, min_dynamic_n, options.slack_fit, small);
@@ -228,20 +224,21 @@ SmallMotionChoice fit_small_motion(const std::vector<TensionSample>& samples, co
   };
   auto meets = [&](const SmallMotionChoice& c) { return std::abs(c.ratio - 1.0) <= tol; };
   const double free_a10 = std::numeric_limits<double>::quiet_NaN();
-  SmallMotionChoice plain = fit_with(0.0, free_a10);
+  SmallMotionChoice plain = fit_with(0.0, {}, free_a10);  // no weights: all 1
   if (meets(plain) || !options.hold_static_stiffness) return plain;
   std::optional<SmallMotionChoice> best;
   for (int k = 0;; ++k) {
     const double exponent = std::min(k * kExponentStep, options.max_run_weight_exponent);
-    const SmallMotionChoice free_fit = k == 0 ? plain : fit_with(exponent, free_a10);
+    const std::vector<double> weights = run_weights(runs, exponent);
+    const SmallMotionChoice free_fit = k == 0 ? plain : fit_with(exponent, weights, free_a10);
     if (meets(free_fit)) return free_fit;
-    SmallMotionChoice held = fit_with(exponent, static_stiffness_n_m);
+    SmallMotionChoice held = fit_with(exponent, weights, static_stiffness_n_m);
     if (meets(held)) {
       double lo = 0.0, hi = 1.0;  // fraction of the way from k_s to the free a10
       for (int i = 0; i < kBisections; ++i) {
         const double mid = 0.5 * (lo + hi);
         const double a10 = static_stiffness_n_m + mid * (free_fit.fit.coefficients.a10() - static_stiffness_n_m);
-        SmallMotionChoice c = fit_with(exponent, a10);
+        SmallMotionChoice c = fit_with(exponent, weights, a10);
         if (meets(c)) {
           lo = mid;
           held = std::move(c);
@@ -257,6 +254,11 @@ SmallMotionChoice fit_small_motion(const std::vector<TensionSample>& samples, co
 }
 
 }  // namespace
+
+double small_motion_ratio(const PolynomialCoefficients& c, double static_stiffness_n_m) {
+  return first_harmonic_n(c, kSmallMotionAmplitudeM, 2.0 * std::numbers::pi / kSmallMotionPeriodS) /
+         (static_stiffness_n_m * kSmallMotionAmplitudeM);
+}
 
 std::shared_ptr<const TowlineFit> build_towline_fit(const model::Towline& towline,
                                                     const TowPoints& points, double mean_tension_n,

@@ -277,6 +277,10 @@ struct FitSummary {
 inline constexpr double kSmallMotionAmplitudeM = 0.3048;
 inline constexpr double kSmallMotionPeriodS = 100.0;
 
+// EQ-TOWLINE-17 at that motion over static_stiffness_n_m x amplitude: 1 in the
+// quasi-static limit (FitSummary::small_motion_ratio of a fit).
+double small_motion_ratio(const PolynomialCoefficients& c, double static_stiffness_n_m);
+
 class TowlineFit {
  public:
   TowlineFit(Catenary catenary, FitSummary summary, std::vector<HarmonicRun> runs);

@@ -223,9 +223,7 @@ TEST(TowlineCalibration, SmallMotionOnEveryBundledLine) {
     for (const auto& run : fit->runs()) samples.insert(samples.end(), run.samples.begin(), run.samples.end());
     const PolynomialFit thesis = fit_polynomial(samples, s.breaking_strength_n - s.mean_tension_n, s.slack_limit_n,
                                                 SlackFit::kOneSided);
-    const double thesis_ratio = first_harmonic_n(thesis.coefficients, kSmallMotionAmplitudeM,
-                                                 2.0 * std::acos(-1.0) / kSmallMotionPeriodS) /
-                                (s.static_stiffness_n_m * kSmallMotionAmplitudeM);
+    const double thesis_ratio = small_motion_ratio(thesis.coefficients, s.static_stiffness_n_m);
     const double e_new = large_run_peak_error(*fit, s.coefficients);
     const double e_thesis = large_run_peak_error(*fit, thesis.coefficients);
     std::printf("%-6s %-5s %-5s %5.0f ft %7.0f lbf: small motion %.3f (thesis fit %.3f); large-run peak error "
