@@ -2,7 +2,8 @@
 // through one add_*_command function. Parsing (CLI11) fills plain structs;
 // commands run after parsing, so every error goes through main()'s one
 // exception-to-exit-code mapping: 0 ok, 2 bad input (InputError, usage),
-// 1 anything else.
+// 1 anything else. `towdb query` returns kExitCheckFailed when it answers and
+// a Navy Towing Manual check fails (README, "Exit codes").
 #ifndef TOWDB_CLI_CLI_HPP
 #define TOWDB_CLI_CLI_HPP
 
@@ -14,6 +15,10 @@
 #include "io/ship_file.hpp"
 
 namespace towdb::cli {
+
+// Exit code of an answered question whose safety check fails (not 0: a script
+// must see it; not 1 or 2: those are errors and bad input).
+inline constexpr int kExitCheckFailed = 3;
 
 struct Context {
   std::string ships_dir;          // --ships-dir; empty = default

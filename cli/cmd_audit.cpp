@@ -216,13 +216,28 @@ void write_audit_plot(const std::string& png, const std::vector<AuditOutcome>& o
   run_gnuplot_with_data(script, dir);
 }
 
-// One transaction: the summary is stored whole or not at all.
+// True when the SQLite file is in WAL mode: header bytes 18 and 19 (file
+// format write and read versions) are 2 for WAL, 1 for a rollback journal
+// (sqlite.org/fileformat2.html, "The Database Header").
+bool file_in_wal_mode(const std::string& db_path) {
+  std::ifstream in(db_path, std::ios::binary);
+  char header[20] = {};
+  in.read(header, sizeof header);
+  return in && header[18] == 2;
+}
+
+// One transaction: the summary is stored whole or not at all. Writing opens
+// the file in WAL mode (store::Database); a file that used a rollback journal
+// (a database shipped in a repository) is put back into it, so the audit
+// changes only meta.last_audit.
 void store_summary(const std::string& db_path, const ordered_json& summary) {
+  const bool was_wal = file_in_wal_mode(db_path);
   store::Database db = store::Database::open(db_path, store::Database::Mode::kReadWrite);
   db.transaction([&] {
     store::Statement st = db.prepare("INSERT OR REPLACE INTO meta (key, value) VALUES ('last_audit', ?)");
     st.bind(1, summary.dump()).run();
   });
+  if (!was_wal) db.exec("PRAGMA journal_mode = DELETE");
 }
 
 int run_audit_command(const Context& ctx, const AuditArgs& a) {

@@ -71,6 +71,7 @@ ordered_json case_json(const sweep::PlannedCase& p) {
   j["tow"] = s.tow;
   j["speed_kt"] = s.speed_kt;
   j["nominal_speed_kt"] = s.nominal_speed_kt;
+  if (s.calculated_mean_tension_lbf) j["calculated_mean_tension_lbf"] = *s.calculated_mean_tension_lbf;
   j["spectrum"] = s.sea.spectrum_text();
   if (s.sea.wind_kt) j["wind_kt"] = *s.sea.wind_kt;
   if (s.sea.hs_ft) j["hs_ft"] = *s.sea.hs_ft;

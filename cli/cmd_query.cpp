@@ -4,7 +4,9 @@
 //   towdb query --db F --tug T --tow W --speed-kt V --wind-kt U --heading-deg H
 //               --line wire|fiber --length-ft L [--mean-tension-lbf M]
 //               (without M: the calculated mean tension of this speed, wind and
-//               heading, computed as the database's build did; database_basis.hpp)
+//               heading: interpolated from the values stored at the grid nodes
+//               (query.h EQ-QUERY-9), else computed as the database's build
+//               did (database_basis.hpp))
 //               [--probability P] [--tow-days D] [--extrapolate] [--brake] [--json|--csv]
 //   towdb query --db F --batch [--json]     CSV queries on stdin, header = flag names
 //   towdb query --db F --leave-one-out      interpolation error of the database
@@ -69,6 +71,7 @@ const char* warning_kind_name(int kind) {
     case TOWDB_QUERY_WARN_INCOMPLETE_GRID: return "incomplete_grid";
     case TOWDB_QUERY_WARN_HIGH_TENSION: return "high_tension";
     case TOWDB_QUERY_WARN_BREAKING_DIFFERS: return "breaking_strength_differs";
+    case TOWDB_QUERY_WARN_ABOVE_CAPACITY: return "above_tug_capacity";
     default: return "other";
   }
 }
@@ -138,22 +141,29 @@ ordered_json result_json(const QueryRequest& rq, const QueryResult& r, bool on_b
   j["dynamic_tension_kips"] = v.dynamic_tension_kips;
   j["dynamic_999_kips"] = v.dynamic_999_kips;
   j["mean_tension_lbf"] = v.mean_tension_lbf;
+  j["calculated_mean_tension_lbf"] = nullable(v.calculated_mean_tension_lbf);
+  j["mean_tension_factor"] = nullable(v.mean_tension_factor);
   j["extreme_tension_lbf"] = v.extreme_tension_lbf;
   j["breaking_strength_lbf"] = v.breaking_strength_lbf;
   j["gumbel_u_kips"] = v.gumbel_u_kips;
   j["gumbel_alpha_per_kip"] = v.gumbel_alpha_per_kip;
+  // Margin = limit - value: negative when the check fails; percent of the limit.
+  auto check = [](const char* name, const char* rule, double value, double limit, int passed) {
+    return ordered_json{{"name", name},
+                        {"rule", rule},
+                        {"value_lbf", value},
+                        {"limit_lbf", limit},
+                        {"margin_lbf", limit - value},
+                        {"margin_percent", 100.0 * (limit - value) / limit},
+                        {"passed", passed != 0}};
+  };
   j["checks"] = ordered_json::array(
-      {{{"name", "extreme_tension"},
-        {"rule", "extreme tension <= breaking strength / 1.5 (Navy Towing Manual)"},
-        {"value_lbf", v.extreme_tension_lbf},
-        {"limit_lbf", v.extreme_limit_lbf},
-        {"passed", v.extreme_check_passed != 0}},
-       {{"name", "mean_tension"},
-        {"rule", on_brake ? "mean tension <= breaking strength / 5 (towline on the brake)"
-                          : "mean tension <= breaking strength / 3 (automatic towing machine)"},
-        {"value_lbf", v.mean_tension_lbf},
-        {"limit_lbf", v.mean_limit_lbf},
-        {"passed", v.mean_check_passed != 0}}});
+      {check("extreme_tension", "extreme tension <= breaking strength / 1.5 (Navy Towing Manual)",
+             v.extreme_tension_lbf, v.extreme_limit_lbf, v.extreme_check_passed),
+       check("mean_tension",
+             on_brake ? "mean tension <= breaking strength / 5 (towline on the brake)"
+                      : "mean tension <= breaking strength / 3 (automatic towing machine)",
+             v.mean_tension_lbf, v.mean_limit_lbf, v.mean_check_passed)});
   j["uncertainty_kips"] = v.uncertainty_kips;
   j["interpolation_error_kips"] = v.interpolation_error_kips;
   j["confidence_interval"] = {{"of", "dynamic_999_kips"},
@@ -231,6 +241,10 @@ std::string csv_row(const QueryRequest& rq, const QueryResult* r, const std::str
 // mean tension), with the reason.
 struct MeanDefault {
   bool calculated = false;
+  // The database stores T_calc at its nodes (query.h EQ-QUERY-9): the library's
+  // default, interpolated from them, is used (no strip theory at query time).
+  bool at_nodes = false;
+  double at_nodes_lbf = std::numeric_limits<double>::quiet_NaN();
   std::optional<DatabaseBasis> basis;
   CalculatedMeanTension tension;
   std::string reason;  // why the library default is used instead (when !calculated)
@@ -274,6 +288,11 @@ class MeanDefaults {
 
 ordered_json mean_default_json(const MeanDefault& d) {
   ordered_json j;
+  if (d.at_nodes) {
+    j["method"] = "calculated_at_nodes";
+    j["calculated_mean_tension_lbf"] = d.at_nodes_lbf;
+    return j;
+  }
   if (!d.calculated) {
     j["method"] = "node_highest_stored";
     j["reason"] = d.reason;
@@ -287,6 +306,12 @@ ordered_json mean_default_json(const MeanDefault& d) {
 }
 
 void print_mean_default(const MeanDefault& d) {
+  if (d.at_nodes) {
+    std::cout << "\nmean tension: not given; the calculated mean tension of this speed and wind on the database's "
+                 "basis, interpolated from the values stored at the grid nodes: "
+              << fmt_grouped(d.at_nodes_lbf) << " lbf (`towdb mean-tension` gives its breakdown)\n";
+    return;
+  }
   if (!d.calculated) {
     std::cout << "\nmean tension: not given; each stored node's highest mean tension is used, because no calculated "
                  "default is available: "
@@ -311,11 +336,30 @@ void print_mean_default(const MeanDefault& d) {
 }
 
 // Fills a missing mean tension; returns what was done (nullopt: it was given).
-std::optional<MeanDefault> apply_mean_default(MeanDefaults& defaults, const QueryArgs& a, QueryRequest* rq) {
+// Where the database stores T_calc at its nodes the library's own default is
+// used (the request keeps NaN); a question the library refuses without a mean
+// tension is refused with a mean tension too, so its error is passed on.
+std::optional<MeanDefault> apply_mean_default(MeanDefaults& defaults, const QueryArgs& a, QueryRequest* rq,
+                                              query::Database& db) {
   if (!std::isnan(a.mean_tension_lbf)) return std::nullopt;
+  const QueryResult probe = db.query(*rq);
+  if (std::isfinite(probe.values.mean_tension_factor)) {
+    MeanDefault d;
+    d.at_nodes = true;
+    d.at_nodes_lbf = probe.values.mean_tension_lbf;
+    return d;
+  }
   MeanDefault d = defaults.for_question(a);
   if (d.calculated) rq->values.mean_tension_lbf = d.tension.total_lbf;
   return d;
+}
+
+// "pass (limit L lbf, margin M lbf = P %)" or "FAIL (limit L lbf, exceeded by M lbf = P %)".
+std::string check_text(double value, double limit, int passed) {
+  const double margin = limit - value;
+  return std::string(passed ? "pass" : "FAIL") + " (limit " + fmt_grouped(limit) + " lbf, " +
+         (passed ? "margin " : "exceeded by ") + fmt_grouped(std::abs(margin)) + " lbf = " +
+         fmt(100.0 * std::abs(margin) / limit, 1) + " %)";
 }
 
 void print_text(const QueryRequest& rq, const QueryResult& r, bool on_brake) {
@@ -326,16 +370,18 @@ void print_text(const QueryRequest& rq, const QueryResult& r, bool on_brake) {
             << ", heading " << fmt(q.heading_deg) << " deg, length " << fmt(q.length_ft) << " ft\n";
   TextTable t({"quantity", "value"});
   t.add_row({"mean tension lbf", fmt_grouped(v.mean_tension_lbf)});
+  if (std::isfinite(v.mean_tension_factor)) {
+    t.add_row({"  / calculated at the nodes (" + fmt_grouped(v.calculated_mean_tension_lbf) + " lbf)",
+               fmt(v.mean_tension_factor, 3)});
+  }
   t.add_row({"dynamic tension kips (p=" + fmt(q.probability) + ", " + fmt(q.tow_days) + " d)",
              fmt(v.dynamic_tension_kips, 1) + " +/- " + fmt(v.uncertainty_kips, 1)});
   t.add_row({"dynamic tension kips (0.001/day)", fmt(v.dynamic_999_kips, 1)});
   t.add_row({"extreme tension lbf", fmt_grouped(v.extreme_tension_lbf)});
   t.add_row({"breaking strength lbf", fmt_grouped(v.breaking_strength_lbf)});
-  t.add_row({"check extreme <= BS/1.5", std::string(v.extreme_check_passed ? "pass" : "FAIL") + " (limit " +
-                                            fmt_grouped(v.extreme_limit_lbf) + " lbf)"});
+  t.add_row({"check extreme <= BS/1.5", check_text(v.extreme_tension_lbf, v.extreme_limit_lbf, v.extreme_check_passed)});
   t.add_row({std::string("check mean <= BS/") + (on_brake ? "5 (brake)" : "3 (ATM)"),
-             std::string(v.mean_check_passed ? "pass" : "FAIL") + " (limit " + fmt_grouped(v.mean_limit_lbf) +
-                 " lbf)"});
+             check_text(v.mean_tension_lbf, v.mean_limit_lbf, v.mean_check_passed)});
   t.add_row({"interpolation", std::string(space_name(v.interpolation_space)) + " space, error estimate " +
                                   fmt(v.interpolation_error_kips, 2) + " kips"});
   t.print(std::cout);
@@ -449,7 +495,7 @@ int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean
     try {
       std::optional<MeanDefault> mean_default;
       try {
-        mean_default = apply_mean_default(mean_defaults, a, &rq);
+        mean_default = apply_mean_default(mean_defaults, a, &rq, db);
       } catch (const InputError& e) {
         throw QueryError(TOWDB_QUERY_INPUT, e.what());  // reported on its row like any bad row
       }
@@ -531,7 +577,7 @@ int run_query(const Context& ctx, const QueryArgs& a) {
     if (a.batch) return run_batch(db, a, mean_defaults);
     require_flags(a, true, true);
     QueryRequest rq = to_request(a);
-    const std::optional<MeanDefault> mean_default = apply_mean_default(mean_defaults, a, &rq);
+    const std::optional<MeanDefault> mean_default = apply_mean_default(mean_defaults, a, &rq, db);
     QueryResult r;
     try {
       r = db.query(rq);
@@ -552,7 +598,7 @@ int run_query(const Context& ctx, const QueryArgs& a) {
       print_text(rq, r, a.brake);
       if (mean_default) print_mean_default(*mean_default);
     }
-    return 0;
+    return r.values.extreme_check_passed && r.values.mean_check_passed ? 0 : kExitCheckFailed;
   } catch (const QueryError& e) {
     rethrow(e);
   }

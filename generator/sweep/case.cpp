@@ -56,6 +56,9 @@ void CaseSpec::validate() const {
   require_in_range("CaseSpec.speed_kt", speed_kt, 1e-3, kMaxSpeed_kt);
   require_in_range("CaseSpec.nominal_speed_kt", nominal_speed_kt, 1e-3, kMaxSpeed_kt);
   require_in_range("CaseSpec.heading_deg", heading_deg, 0.0, 360.0);
+  if (calculated_mean_tension_lbf) {
+    require_positive("CaseSpec.calculated_mean_tension_lbf", *calculated_mean_tension_lbf);
+  }
   require_input(line == model::LineKind::kWire || line == model::LineKind::kFiber, "CaseSpec.line",
                 static_cast<double>(static_cast<int>(line)), "must be wire or fiber (a chain is a pendant)");
   require_in_range("CaseSpec.length_ft", length_ft, 1.0, kMaxLength_ft);

@@ -71,6 +71,10 @@ struct CaseSpec {
   double length_ft = 0.0;          // hawser length [ft] (the tug's pendant is added), > 0
   double mean_tension_lbf = 0.0;   // mean towline tension [lbf], > 0
   std::string mean_tension_label;  // how it was chosen: "calculated+15%", "given", ...
+  // T_calc of EQ-SWEEP-1 at this case's speed, wind and heading [lbf], > 0,
+  // when the sweep computed one (a wind sea in a grid); a description of the
+  // case (stored for the query's mean-tension axis), not a simulation input.
+  std::optional<double> calculated_mean_tension_lbf;
   int days = 0;                    // simulated days used for the statistics, >= 1
   std::int64_t seed = 0;           // random seed, >= 0: the case is bit-reproducible from its inputs and seed
   std::string sweep_label;         // label of the sweep entry that made it

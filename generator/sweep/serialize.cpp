@@ -98,6 +98,7 @@ void write_spec(ByteWriter& w, const CaseSpec& s) {
   w.f64(s.length_ft);
   w.f64(s.mean_tension_lbf);
   w.str(s.mean_tension_label);
+  w.opt_f64(s.calculated_mean_tension_lbf);
   w.i64(s.days);
   w.i64(s.seed);
   w.str(s.sweep_label);
@@ -132,6 +133,7 @@ CaseSpec read_spec(ByteReader& r) {
   s.length_ft = r.f64();
   s.mean_tension_lbf = r.f64();
   s.mean_tension_label = r.str();
+  s.calculated_mean_tension_lbf = r.opt_f64();
   s.days = static_cast<int>(r.i64());
   s.seed = r.i64();
   s.sweep_label = r.str();

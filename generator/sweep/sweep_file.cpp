@@ -507,6 +507,9 @@ SweepExpansion expand_sweep(const SweepFile& sweep, const io::ShipCatalog& catal
                       break;
                   }
                   spec.mean_tension_label = level.label;
+                  if (sea.wind_kt && speed.calculated_lbf > 0.0) {
+                    spec.calculated_mean_tension_lbf = speed.calculated_lbf;
+                  }
                   spec.days = g.days;
                   spec.sweep_label = g.label;
                   spec.seed = case_seed(g.base_seed, spec);

@@ -42,7 +42,7 @@ double coefficient_to_user(double a_si, int length_power) {
 // (m + n) of a10, a01, a20, a11, a02, a30, a21, a12, a03.
 constexpr int kCoefficientLengthPower[9] = {1, 1, 2, 2, 2, 3, 3, 3, 3};
 
-// Binds every input column of `cases` (parameters 1..22 in this order).
+// Binds every input column of `cases` (parameters 1..26 in this order).
 void bind_case_inputs(store::Statement& st, const CaseSpec& s, const CaseKeys& k, std::int64_t tug_id,
                       std::int64_t tow_id) {
   st.bind(1, k.case_key)
@@ -69,7 +69,8 @@ void bind_case_inputs(store::Statement& st, const CaseSpec& s, const CaseKeys& k
       .bind(22, s.days)
       .bind(23, s.seed)
       .bind(24, s.condition_key)
-      .bind(25, s.nominal_speed_kt);
+      .bind(25, s.nominal_speed_kt)
+      .bind(26, s.calculated_mean_tension_lbf);
 }
 
 }  // namespace
@@ -209,14 +210,14 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
         "INSERT INTO cases (case_key, inputs_sha256, sweep_label, tug_name, tow_name, tug_vessel_id, tow_vessel_id, "
         "speed_kt, spectrum, wind_kt, hs_ft, tp_s, gamma, swell_hs_ft, swell_tp_s, swell_heading_deg, heading_deg, "
         "line_type, length_ft, mean_tension_lbf, mean_tension_label, days, seed, condition_key, nominal_speed_kt, "
-        "status, build_id, updated_utc) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
-        "?, ?, ?, 'pending', ?, ?)");
+        "calculated_mean_tension_lbf, status, build_id, updated_utc) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+        "?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 'pending', ?, ?)");
     store::Statement replace = db_.prepare(
         "UPDATE cases SET case_key = ?, inputs_sha256 = ?, sweep_label = ?, tug_name = ?, tow_name = ?, "
         "tug_vessel_id = ?, tow_vessel_id = ?, speed_kt = ?, spectrum = ?, wind_kt = ?, hs_ft = ?, tp_s = ?, "
         "gamma = ?, swell_hs_ft = ?, swell_tp_s = ?, swell_heading_deg = ?, heading_deg = ?, line_type = ?, "
         "length_ft = ?, mean_tension_lbf = ?, mean_tension_label = ?, days = ?, seed = ?, condition_key = ?, "
-        "nominal_speed_kt = ?, status = 'pending', error_message = NULL, fit_id = NULL, build_id = ?, "
+        "nominal_speed_kt = ?, calculated_mean_tension_lbf = ?, status = 'pending', error_message = NULL, fit_id = NULL, build_id = ?, "
         "updated_utc = ? WHERE case_id = ?");
     store::Statement drop_results = db_.prepare("DELETE FROM results WHERE case_id = ?");
     store::Statement drop_days = db_.prepare("DELETE FROM daily_maxima WHERE case_id = ?");
@@ -257,14 +258,14 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
         drop_days.bind(1, id);
         drop_days.run();
         bind_case_inputs(replace, s, k, tug_id, tow_id);
-        replace.bind(26, build_id).bind(27, now).bind(28, id);
+        replace.bind(27, build_id).bind(28, now).bind(29, id);
         replace.run();
         out[i] = {id, CaseState::kChanged};
         continue;
       }
       by_condition.reset();
       bind_case_inputs(insert, s, k, tug_id, tow_id);
-      insert.bind(26, build_id).bind(27, now);
+      insert.bind(27, build_id).bind(28, now);
       insert.run();
       out[i] = {db_.last_insert_rowid(), CaseState::kNew};
     }

@@ -106,6 +106,8 @@ void to_result(const Answer& a, towdb_query_result* out) {
   out->extrapolated = a.extrapolated ? 1 : 0;
   out->warning_count = static_cast<int>(a.warnings.size());
   out->nearest_count = static_cast<int>(a.nearest.size());
+  out->calculated_mean_tension_lbf = a.calculated_mean_tension_lbf;
+  out->mean_tension_factor = a.mean_tension_factor;
 }
 
 int run_search(towdb_query_db* db, const towdb_query_request* request, towdb_query_search* search,

@@ -23,6 +23,7 @@ struct CaseRec {
   std::int64_t id = 0;
   double speed_kt = kNaN, wind_kt = kNaN, hs_ft = kNaN, tp_s = kNaN, heading_deg = kNaN;
   double length_ft = kNaN, mean_lbf = kNaN;
+  double calc_lbf = kNaN;  // EQ-QUERY-9 T_calc of the case (NaN when not stored)
   int days = 0;
   double u_kips = kNaN, beta_kips = kNaN, dynamic_999_kips = kNaN;
 };
@@ -41,12 +42,15 @@ struct MeanPoint {
 struct Node {
   std::array<int, kGridAxes> index{};
   std::vector<MeanPoint> points;  // ascending mean tension
+  double calc_lbf = kNaN;         // EQ-QUERY-9 T_calc of the node (NaN: not stored for all its cases)
+  double ln_calc = kNaN;
 };
 
 struct Group {
   std::string tug, tow, line, family;
   std::string tug_key, tow_key;  // normalised names (lower case, letters and digits)
   bool wind_sea = true;
+  bool relative = false;  // EQ-QUERY-9: every node stores T_calc, mean tension interpolated as m / T_calc
   std::array<std::vector<double>, kGridAxes> axis;
   std::array<std::size_t, kGridAxes> stride{};
   std::vector<int> node_at;  // flat grid index -> node, -1 where no case is stored
@@ -127,6 +131,35 @@ int find_value(const std::vector<double>& axis, double v) {
   const auto it = std::lower_bound(axis.begin(), axis.end(), v - kSameValueRelTol * std::max(1.0, std::abs(v)));
   TOWDB_ASSERT(it != axis.end() && same_value(*it, v));
   return static_cast<int>(it - axis.begin());
+}
+
+// EQ-QUERY-9: a node's T_calc is that of its cases (the geometric mean where
+// merged duplicates differ); the group is on the relative axis when every
+// node has one.
+void assign_calculated(Group& g) {
+  g.relative = !g.nodes.empty();
+  for (Node& node : g.nodes) {
+    double sum_ln = 0.0;
+    int n = 0;
+    bool all = true;
+    for (const MeanPoint& p : node.points) {
+      for (int ci : p.cases) {
+        const double c = g.cases[ci].calc_lbf;
+        if (!(c > 0.0 && std::isfinite(c))) {
+          all = false;
+        } else {
+          sum_ln += std::log(c);
+          ++n;
+        }
+      }
+    }
+    if (all && n > 0) {
+      node.ln_calc = sum_ln / n;
+      node.calc_lbf = n == 1 ? g.cases[node.points.front().cases.front()].calc_lbf : std::exp(node.ln_calc);
+    } else {
+      g.relative = false;
+    }
+  }
 }
 
 // -ln(-ln(1 - p)): the Gumbel frequency term of EQ-QUERY-3.
@@ -270,6 +303,20 @@ NodeValue node_value(const Group& g, const Node& node, double mean_lbf, Space s,
   return v;
 }
 
+// EQ-QUERY-9: refuses a factor outside the ones stored at a node, in the
+// factor's own terms (node_value would name the node's absolute tension).
+void check_factor_stored(const Group& g, const Node& node, double factor, double calc_query_lbf) {
+  const double lo = node.points.front().mean_lbf / node.calc_lbf;
+  const double hi = node.points.back().mean_lbf / node.calc_lbf;
+  if ((factor >= lo || same_value(factor, lo)) && (factor <= hi || same_value(factor, hi))) return;
+  throw OutOfRangeError("mean_tension_lbf = " + format_value(std::round(factor * calc_query_lbf)) + " is " +
+                        format_value(std::round(factor * 1000.0) / 1000.0) +
+                        " x the calculated mean tension at the query (" + format_value(std::round(calc_query_lbf)) +
+                        " lbf); " + g.describe(node.index) + " stores " + format_value(std::round(lo * 1000.0) / 1000.0) +
+                        " to " + format_value(std::round(hi * 1000.0) / 1000.0) +
+                        " x its calculated value; pass extrapolate (--extrapolate) to extrapolate");
+}
+
 // A node's u and beta in kips (stored values when pinned to one mean tension).
 double node_u(const NodeValue& v, Space s) { return v.p0 == v.p1 ? v.u : from_space(v.g_u, s); }
 double node_beta(const NodeValue& v, Space s) { return v.p0 == v.p1 ? v.beta : from_space(v.g_beta, s); }
@@ -286,6 +333,7 @@ struct Corner {
 
 struct Evaluation {
   double u = 0.0, beta = 0.0, mean_lbf = 0.0, slack = 0.0;
+  double calc_lbf = kNaN, factor = kNaN;  // EQ-QUERY-9 (NaN when the group is absolute)
   double ci_level = 0.0, ci_low = 0.0, ci_high = 0.0;
   double bs_min = 0.0, bs_max = 0.0;
   bool above_bs = false, mean_extrapolated = false;
@@ -295,7 +343,17 @@ struct Evaluation {
   std::array<Corner, kMaxCorners> corners;  // indexed by the bit mask over active axes
 };
 
-void evaluate(const Group& g, const Brackets& br, double mean_lbf, Space s, bool extrapolate, Evaluation* ev) {
+// What mean tension each corner node is read at (EQ-QUERY-9). Absolute: the
+// same mean tension at every node (NaN: each node's highest). Relative: the
+// factor f = mean / T_calc(query) times each node's own T_calc; a finite
+// `factor` fixes f (the error estimate's pinned evaluations keep the query's).
+struct MeanTarget {
+  double mean_lbf = kNaN;
+  double factor = kNaN;
+};
+
+void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Space s, bool extrapolate,
+              Evaluation* ev) {
   ev->active_count = 0;
   for (int a = 0; a < kGridAxes; ++a) {
     if (br[a].i0 != br[a].i1) ev->active[ev->active_count++] = a;
@@ -328,12 +386,36 @@ void evaluate(const Group& g, const Brackets& br, double mean_lbf, Space s, bool
       continue;
     }
     c.node = node;
-    c.value = node_value(g, g.nodes[node], mean_lbf, s, extrapolate);
     present_weight += w;
     ++present;
   }
   if (present == 0 || !(std::abs(present_weight) > 1e-12)) {
     throw OutOfRangeError("no stored case surrounds the query in " + g.name());
+  }
+  // EQ-QUERY-9: T_calc at the query, geometric (log-linear) over the corners.
+  ev->calc_lbf = ev->factor = kNaN;
+  if (g.relative) {
+    double ln_calc = 0.0;
+    int last = -1;
+    for (int mask = 0; mask < n_corners; ++mask) {
+      const Corner& c = ev->corners[mask];
+      if (c.node < 0) continue;
+      ln_calc += c.weight / present_weight * g.nodes[c.node].ln_calc;
+      last = c.node;
+    }
+    // At a single node its own value, bit for bit (no log/exp round trip).
+    ev->calc_lbf = present == 1 ? g.nodes[last].calc_lbf : std::exp(ln_calc);
+    ev->factor = std::isfinite(target.factor)     ? target.factor
+                 : std::isnan(target.mean_lbf) ? 1.0
+                                               : target.mean_lbf / ev->calc_lbf;
+  }
+  for (int mask = 0; mask < n_corners; ++mask) {
+    Corner& c = ev->corners[mask];
+    if (c.node < 0) continue;
+    const Node& node = g.nodes[c.node];
+    if (g.relative && !extrapolate) check_factor_stored(g, node, ev->factor, ev->calc_lbf);
+    const double m = g.relative ? ev->factor * node.calc_lbf : target.mean_lbf;
+    c.value = node_value(g, node, m, s, extrapolate);
   }
   double gu = 0.0, gb = 0.0;
   ev->mean_lbf = ev->slack = ev->ci_low = ev->ci_high = 0.0;
@@ -397,6 +479,82 @@ double quantile_se_factor(double reduced_variate_plus_ln_days) {
   return std::sqrt(std::max(0.0, 1.0 + 1.1396 * k + 1.1 * k * k));
 }
 
+// EQ-QUERY-7's floor on a grid axis with curvature information: at least
+// this fraction of the chord estimate t (1 - t) |f(x_i1) - f(x_i0)|, because
+// the tension changes abruptly between some nodes (the line goes slack in
+// exactly following seas and not 30 deg off), where a second difference
+// across three nodes misses the shape inside the cell. Calibrated with
+// `towdb audit` on the bundled database (docs/audit.md): 0 covered 73 % of
+// 30 questions (seed 1), 0.25 77 %, 0.5 90 %, 1 97 %; 0.5 then covered 87 %
+// of 100 other questions (seed 2) against 78 % without the floor.
+constexpr double kChordSagFloor = 0.5;
+
+// EQ-QUERY-7: interpolation error of x(p, D) = u + beta c at the query,
+// summed over the active grid axes and the mean tension. Along an axis with
+// a third stored value beside the cell, t (1 - t) h^2 |f[x_k, x_i0, x_i1]|,
+// the larger over the triples on either side, and at least kChordSagFloor
+// times the chord estimate; with only the cell's two values, the chord
+// estimate t (1 - t) |f(x_i1) - f(x_i0)| (a chord that sags by a quarter of
+// the rise at mid-cell: the curvature of f ~ x^2 over the cell). In log
+// space f = ln x and the estimate is scaled by x (dx = x d ln x).
+double interpolation_error_kips(const Group& g, const Brackets& br, const Evaluation& ev, const MeanTarget& target,
+                                Space s, bool ex, double c, double answer_kips) {
+  const bool log_space = s == Space::kLog && answer_kips > 0.0;
+  auto g_of = [&](double x) { return log_space ? std::log(x) : x; };
+  const double scale = log_space ? answer_kips : 1.0;
+  auto along = [](double t, double h, double f0, double f1, double dd2) {
+    return std::isnan(dd2) ? std::abs(t * (1.0 - t)) * std::abs(f1 - f0) : std::abs(t * (1.0 - t)) * h * h * std::abs(dd2);
+  };
+  double err = 0.0;
+  for (int j = 0; j < ev.active_count; ++j) {
+    const int a = ev.active[j];
+    const auto& ax = g.axis[a];
+    const int i0 = br[a].i0, i1 = br[a].i1, n = static_cast<int>(ax.size());
+    // f at stored index i of this axis, the other axes as in the query (NaN: not available).
+    auto f_at = [&](int i) {
+      Brackets pinned = br;
+      pinned[a] = Bracket{i, i, 0.0, false};
+      Evaluation e2;
+      try {
+        evaluate(g, pinned, target, s, ex, &e2);
+        return g_of(e2.u + e2.beta * c);
+      } catch (const InputError&) {
+        return kNaN;
+      } catch (const NumericalError&) {
+        return kNaN;
+      }
+    };
+    const double f0 = f_at(i0), f1 = f_at(i1);
+    if (!(std::isfinite(f0) && std::isfinite(f1))) continue;  // ln of a non-positive corner value
+    const double h = ax[i1] - ax[i0], t = br[a].t;
+    double e_axis = n == 2 ? along(t, h, f0, f1, kNaN) : kChordSagFloor * along(t, h, f0, f1, kNaN);
+    if (i0 - 1 >= 0) {
+      const double fl = f_at(i0 - 1);
+      if (std::isfinite(fl)) e_axis = std::max(e_axis, along(t, h, f0, f1, divided_difference2(ax[i0 - 1], fl, ax[i0], f0, ax[i1], f1)));
+    }
+    if (i1 + 1 < n) {
+      const double fr = f_at(i1 + 1);
+      if (std::isfinite(fr)) e_axis = std::max(e_axis, along(t, h, f0, f1, divided_difference2(ax[i0], f0, ax[i1], f1, ax[i1 + 1], fr)));
+    }
+    err += scale * e_axis;
+  }
+  const int n_corners = 1 << ev.active_count;
+  for (int mask = 0; mask < n_corners; ++mask) {
+    const Corner& cn = ev.corners[mask];
+    if (cn.node < 0 || cn.value.p0 == cn.value.p1) continue;
+    const auto& pts = g.nodes[cn.node].points;
+    const int p0 = cn.value.p0, p1 = cn.value.p1, n = static_cast<int>(pts.size());
+    auto xp = [&](int i) { return g_of(pts[i].u_kips + pts[i].beta_kips * c); };
+    auto m = [&](int i) { return pts[i].mean_lbf; };
+    const double h = m(p1) - m(p0), t = cn.value.t;
+    double e_mean = n == 2 ? along(t, h, xp(p0), xp(p1), kNaN) : 0.0;
+    if (p0 - 1 >= 0) e_mean = std::max(e_mean, along(t, h, xp(p0), xp(p1), divided_difference2(m(p0 - 1), xp(p0 - 1), m(p0), xp(p0), m(p1), xp(p1))));
+    if (p1 + 1 < n) e_mean = std::max(e_mean, along(t, h, xp(p0), xp(p1), divided_difference2(m(p0), xp(p0), m(p1), xp(p1), m(p1 + 1), xp(p1 + 1))));
+    if (std::isfinite(e_mean)) err += scale * std::abs(cn.weight) * e_mean;
+  }
+  return err;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------
@@ -415,6 +573,7 @@ void QueryOptions::validate() const {
   require_input(std::isfinite(mean_safety_factor_brake) && mean_safety_factor_brake >= 1.0,
                 "mean_safety_factor_brake", mean_safety_factor_brake, "must be a finite number >= 1");
   require_in_range("nearest_cases", nearest_cases, 0, 64);
+  require_positive("tug_capacity_lbf", tug_capacity_lbf);
 }
 
 void Request::validate() const {
@@ -465,7 +624,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
         "SELECT c.case_id, c.tug_name, c.tow_name, c.line_type, c.speed_kt, c.spectrum, c.wind_kt, c.hs_ft, "
         "c.tp_s, c.gamma, c.swell_hs_ft, c.heading_deg, c.length_ft, c.mean_tension_lbf, c.days, "
         "r.gumbel_u_kips, r.gumbel_alpha_per_kip, r.dynamic_999_kips, r.ci_level, r.ci_low_kips, r.ci_high_kips, "
-        "r.breaking_strength_lbf, r.above_breaking_strength, r.slack_fraction "
+        "r.breaking_strength_lbf, r.above_breaking_strength, r.slack_fraction, c.calculated_mean_tension_lbf "
         "FROM cases c JOIN results r ON r.case_id = c.case_id WHERE c.status = 'done' ORDER BY c.case_id");
     while (st.step()) {
       Row r;
@@ -495,6 +654,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
       r.bs = st.column_double(21);
       r.above = st.column_int(22) != 0;
       r.slack = st.column_double(23);
+      r.rec.calc_lbf = st.column_optional_double(24).value_or(kNaN);
       if (!(std::isfinite(alpha) && alpha > 0.0 && std::isfinite(r.rec.u_kips) && std::isfinite(r.bs) && r.bs > 0.0 &&
             std::isfinite(r.rec.speed_kt) && std::isfinite(r.rec.length_ft) && std::isfinite(r.rec.mean_lbf))) {
         throw DatabaseError(path.string() + ": case " + std::to_string(r.rec.id) +
@@ -615,6 +775,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
       std::sort(node.points.begin(), node.points.end(),
                 [](const MeanPoint& a, const MeanPoint& b) { return a.mean_lbf < b.mean_lbf; });
     }
+    assign_calculated(g);
     e.case_count_ += static_cast<int>(g.cases.size());
   }
 
@@ -628,7 +789,11 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
     if (e.log_ok_) {
       const LooStats lin = e.leave_one_out(Space::kLinear, kAllAxes);
       const LooStats lg = e.leave_one_out(Space::kLog, kAllAxes);
-      if (lin.samples > 0 && lg.median_rel_error < lin.median_rel_error) e.space_ = Space::kLog;
+      // The 90th percentile, not the median: the planner's large errors come
+      // from the few cells where the tension changes abruptly (docs/audit.md:
+      // on the bundled database log space halves the audit's 90th-percentile
+      // error while the leave-one-out median prefers linear).
+      if (lin.samples > 0 && lg.p90_rel_error < lin.p90_rel_error) e.space_ = Space::kLog;
     }
   } else {
     e.space_ = space;
@@ -728,7 +893,7 @@ Answer Engine::query(const Request& r) const {
   }
 
   Evaluation ev;
-  evaluate(g, br, r.mean_tension_lbf, s, ex, &ev);
+  evaluate(g, br, MeanTarget{r.mean_tension_lbf, kNaN}, s, ex, &ev);
 
   const double c = std::log(r.tow_days) + gumbel_reduced_variate(r.probability);
   const double c999 = gumbel_reduced_variate(kPlanningProbability);
@@ -739,7 +904,11 @@ Answer Engine::query(const Request& r) const {
   ans.dynamic_tension_kips = ev.u + ev.beta * c;
   ans.dynamic_999_kips = ev.u + ev.beta * c999;
   // The query's own mean tension when given (the weighted sum only rounds it).
-  ans.mean_tension_lbf = std::isnan(r.mean_tension_lbf) ? ev.mean_lbf : r.mean_tension_lbf;
+  ans.mean_tension_lbf = !std::isnan(r.mean_tension_lbf) ? r.mean_tension_lbf
+                         : g.relative                   ? ev.calc_lbf
+                                                        : ev.mean_lbf;
+  ans.calculated_mean_tension_lbf = ev.calc_lbf;
+  ans.mean_tension_factor = ev.factor;
   ans.extreme_tension_lbf = ans.mean_tension_lbf + ans.dynamic_tension_kips * 1000.0;
   ans.breaking_strength_lbf = ev.bs_min;
   ans.extreme_limit_lbf = ev.bs_min / options_.extreme_safety_factor;
@@ -752,58 +921,10 @@ Answer Engine::query(const Request& r) const {
   ans.ci_low_kips = ev.ci_low;
   ans.ci_high_kips = ev.ci_high;
 
-  // EQ-QUERY-7: interpolation error from the second divided differences. In
-  // log space the curvature is that of ln x, and dx = x d(ln x).
   auto x_at = [&](const NodeValue& v) { return node_u(v, s) + node_beta(v, s) * c; };
-  const bool log_space = s == Space::kLog && ans.dynamic_tension_kips > 0.0;
-  auto g_of = [&](double x) { return log_space ? std::log(x) : x; };
-  const double scale = log_space ? ans.dynamic_tension_kips : 1.0;
-  double err = 0.0;
-  for (int j = 0; j < ev.active_count; ++j) {
-    const int a = ev.active[j];
-    const auto& ax = g.axis[a];
-    const int i0 = br[a].i0, i1 = br[a].i1, n = static_cast<int>(ax.size());
-    const int k = i0 - 1 >= 0 ? i0 - 1 : (i1 + 1 < n ? i1 + 1 : -1);
-    if (k < 0) continue;  // two stored values only: no curvature information on this axis
-    double f[3];
-    const int at[3] = {k, i0, i1};
-    bool ok = true;
-    for (int m = 0; m < 3 && ok; ++m) {
-      Brackets pinned = br;
-      pinned[a] = Bracket{at[m], at[m], 0.0, false};
-      Evaluation e2;
-      try {
-        evaluate(g, pinned, r.mean_tension_lbf, s, ex, &e2);
-        f[m] = g_of(e2.u + e2.beta * c);
-      } catch (const InputError&) {
-        ok = false;
-      } catch (const NumericalError&) {
-        ok = false;
-      }
-    }
-    if (!ok) continue;
-    const double h = ax[i1] - ax[i0];
-    const double t = br[a].t;
-    const double e_axis = scale * std::abs(t * (1.0 - t)) * h * h *
-                          std::abs(divided_difference2(ax[k], f[0], ax[i0], f[1], ax[i1], f[2]));
-    if (std::isfinite(e_axis)) err += e_axis;  // not finite: ln of a non-positive corner value
-  }
+  const double err =
+      interpolation_error_kips(g, br, ev, MeanTarget{r.mean_tension_lbf, ev.factor}, s, ex, c, ans.dynamic_tension_kips);
   const int n_corners = 1 << ev.active_count;
-  for (int mask = 0; mask < n_corners; ++mask) {
-    const Corner& cn = ev.corners[mask];
-    if (cn.node < 0 || cn.value.p0 == cn.value.p1) continue;
-    const auto& pts = g.nodes[cn.node].points;
-    const int p0 = cn.value.p0, p1 = cn.value.p1, n = static_cast<int>(pts.size());
-    const int k = p0 - 1 >= 0 ? p0 - 1 : (p1 + 1 < n ? p1 + 1 : -1);
-    if (k < 0) continue;
-    auto xp = [&](int i) { return g_of(pts[i].u_kips + pts[i].beta_kips * c); };
-    const double h = pts[p1].mean_lbf - pts[p0].mean_lbf;
-    const double t = cn.value.t;
-    const double e_mean =
-        scale * std::abs(cn.weight) * std::abs(t * (1.0 - t)) * h * h *
-        std::abs(divided_difference2(pts[k].mean_lbf, xp(k), pts[p0].mean_lbf, xp(p0), pts[p1].mean_lbf, xp(p1)));
-    if (std::isfinite(e_mean)) err += e_mean;
-  }
   ans.interpolation_error_kips = err;
   const double ci_half = 0.5 * (ev.ci_high - ev.ci_low) * quantile_se_factor(c) / quantile_se_factor(c999);
   ans.uncertainty_kips = std::hypot(err, ci_half);
@@ -824,6 +945,13 @@ Answer Engine::query(const Request& r) const {
     warn(WarningKind::kExtrapolated, "mean_tension_lbf = " + format_value(r.mean_tension_lbf) +
                                          " is outside the mean tensions stored at some grid nodes: extrapolated "
                                          "linearly from each node's two nearest mean tensions");
+  }
+  if (ans.mean_tension_lbf > options_.tug_capacity_lbf) {
+    warn(WarningKind::kAboveCapacity,
+         "mean tension " + format_value(std::round(ans.mean_tension_lbf)) + " lbf is above " +
+             format_value(options_.tug_capacity_lbf) +
+             " lbf, beyond the capacity of the tugs (thesis ch. 5): the tow would have to slow down; the answer "
+             "is for the speed asked");
   }
   if (ev.missing > 0) {
     ans.extrapolated = true;
@@ -960,9 +1088,11 @@ LooStats Engine::leave_one_out(Space s, int axis) const {
         const double t = (g.axis[a][i] - g.axis[a][i - 1]) / (g.axis[a][i + 1] - g.axis[a][i - 1]);
         for (const MeanPoint& p : node.points) {
           NodeValue vl, vr;
+          // EQ-QUERY-9: on the relative axis the neighbours are read at the same factor.
+          const double f = g.relative ? p.mean_lbf / node.calc_lbf : kNaN;
           try {
-            vl = node_value(g, g.nodes[l], p.mean_lbf, s, false);
-            vr = node_value(g, g.nodes[rt], p.mean_lbf, s, false);
+            vl = node_value(g, g.nodes[l], g.relative ? f * g.nodes[l].calc_lbf : p.mean_lbf, s, false);
+            vr = node_value(g, g.nodes[rt], g.relative ? f * g.nodes[rt].calc_lbf : p.mean_lbf, s, false);
           } catch (const OutOfRangeError&) {
             continue;  // the neighbours do not bracket this mean tension
           }

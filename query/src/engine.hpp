@@ -53,6 +53,7 @@ enum class WarningKind : int {
   kIncompleteGrid = 5,
   kHighTension = 6,
   kBreakingDiffers = 7,
+  kAboveCapacity = 8,
 };
 
 struct Warning {
@@ -71,6 +72,10 @@ struct QueryOptions {
   double extreme_safety_factor = 1.5;
   double mean_safety_factor_machine = 3.0;
   double mean_safety_factor_brake = 5.0;
+  // Mean tension above which the thesis's tugs cannot tow at the speed asked
+  // (thesis ch. 5: 125,000 lbf, "beyond the capacity of the tugs"); the
+  // answer is given, with a warning that the tow would have to slow down.
+  double tug_capacity_lbf = 125000.0;
   // Nearest stored cases reported with an answer.
   int nearest_cases = 4;
 
@@ -86,7 +91,7 @@ struct Request {
   double tp_s = kNaN;                  // > 0 or NaN
   double heading_deg = kNaN;           // [0, 360]
   double length_ft = kNaN;             // > 0
-  double mean_tension_lbf = kNaN;      // > 0, NaN: each node's highest stored mean tension
+  double mean_tension_lbf = kNaN;      // > 0, NaN: the calculated one (EQ-QUERY-9), else each node's highest
   double probability = 0.001;          // (0, 1): exceedance probability of the tow's maximum
   double tow_days = 1.0;               // >= 1
   bool extrapolate = false;            // refuse outside the data unless true
@@ -110,6 +115,10 @@ struct Answer {
   double dynamic_tension_kips = kNaN;
   double dynamic_999_kips = kNaN;
   double mean_tension_lbf = kNaN;
+  // EQ-QUERY-9: T_calc at the query's conditions and mean / T_calc (NaN when
+  // the database stores no calculated mean tensions).
+  double calculated_mean_tension_lbf = kNaN;
+  double mean_tension_factor = kNaN;
   double extreme_tension_lbf = kNaN;
   double breaking_strength_lbf = kNaN;
   double extreme_limit_lbf = kNaN;

@@ -13,6 +13,7 @@
 //                with its breakdown; the library default with the reason when the
 //                database records no basis or the sweep file changed
 //   cli-audit-7  audit draws the calculated mean tension when the database has a basis
+//   cli-audit-8  the query's default mean tension comes from the nodes' stored T_calc (query.h EQ-QUERY-9)
 //
 // The databases are synthetic (tests/query/synthetic_db.hpp) and the direct
 // simulations 3 days long: the errors mean nothing here, only the bookkeeping.
@@ -177,10 +178,23 @@ TEST_F(CliAudit, EveryQuestionIsAnsweredOrRefusedSameForAnyThreadCount) {  // cl
   EXPECT_EQ(meta_value(db_, "last_audit"), "");  // --no-store
 }
 
+// SQLite header byte 18: 1 for a rollback journal, 2 for WAL (sqlite.org/fileformat2.html).
+int journal_format_byte(const std::filesystem::path& db_path) {
+  const std::string text = read_text(db_path);
+  return text.size() > 18 ? static_cast<int>(text[18]) : -1;
+}
+
 TEST_F(CliAudit, SummaryIsStoredAndStatusShowsIt) {  // cli-audit-2
   EXPECT_EQ(meta_value(db_, "last_audit"), "");
+  {
+    // A database shipped with a rollback journal (as db/towdb.sqlite) keeps it.
+    auto db = store::Database::open(db_, store::Database::Mode::kReadWrite);
+    db.exec("PRAGMA journal_mode = DELETE");
+  }
+  ASSERT_EQ(journal_format_byte(db_), 1);
   const CommandResult r = run_towdb(audit(db_, "--draws 1 --threads 2"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(journal_format_byte(db_), 1) << "the audit switched the file to WAL";
   EXPECT_NE(r.out.find("answered without extrapolation"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("summary stored in"), std::string::npos) << r.out;
   const json stored = json::parse(meta_value(db_, "last_audit"));
@@ -258,7 +272,7 @@ class CliQueryDefaultMean : public ::testing::Test {
 
 TEST_F(CliQueryDefaultMean, CalculatedOnTheDatabasesBasis) {  // cli-audit-6
   const CommandResult none = run_towdb(query("--json"));
-  ASSERT_EQ(none.exit_code, 0) << none.err;
+  ASSERT_EQ(none.exit_code, 3) << none.err;  // answered at 172,500 lbf: the mean check (BS/3) fails
   const json n = json::parse(none.out);
   EXPECT_EQ(n.at("mean_tension_default").at("method"), "node_highest_stored");
   EXPECT_NE(n.at("mean_tension_default").at("reason").get<std::string>().find("no completed build"), std::string::npos);
@@ -294,10 +308,40 @@ TEST_F(CliQueryDefaultMean, CalculatedOnTheDatabasesBasis) {  // cli-audit-6
   // The sweep file changed since the build: no basis, and the reason says so.
   std::ofstream(sweep_, std::ios::app) << "# edited\n";
   const CommandResult changed = run_towdb(query("--json"));
-  ASSERT_EQ(changed.exit_code, 0) << changed.err;
+  ASSERT_EQ(changed.exit_code, 3) << changed.err;  // the nodes' highest, 172,500 lbf: mean check fails
   const json c = json::parse(changed.out).at("mean_tension_default");
   EXPECT_EQ(c.at("method"), "node_highest_stored");
   EXPECT_NE(c.at("reason").get<std::string>().find("changed"), std::string::npos) << c.dump();
+}
+
+TEST_F(CliQueryDefaultMean, CalculatedAtTheNodesWhenTheDatabaseStoresIt) {  // cli-audit-8
+  // query.h EQ-QUERY-9: nodes that store T_calc give the default without strip theory: T_calc at the
+  // question (geometric over the cell; here 150,000 lbf at every node), factor 1, and the basis of a
+  // recorded build is not needed.
+  std::vector<SyntheticCase> cases = group("LHA 1", 150000.0);
+  for (SyntheticCase& c : cases) c.calculated_mean_tension_lbf = 150000.0;
+  const auto path = dir_ / "at-nodes.towdb";
+  write_synthetic_db(path, cases);
+  const std::string base = "query --db '" + path.string() +
+                           "' --tug T-ATF --tow LHA1 --line wire --wind-kt 22 --heading-deg 90 --length-ft 1500";
+  const std::string q = base + " --speed-kt 5.5";
+  const CommandResult r = run_towdb(q + " --json");
+  ASSERT_EQ(r.exit_code, 3) << r.err;  // 150,000 lbf > BS/3: answered, the mean check fails
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j.at("mean_tension_default").at("method"), "calculated_at_nodes") << j.dump();
+  EXPECT_REL_CLOSE(j.at("mean_tension_lbf").get<double>(), 150000.0, kSameCodeRelTol);
+  EXPECT_REL_CLOSE(j.at("calculated_mean_tension_lbf").get<double>(), 150000.0, kSameCodeRelTol);
+  EXPECT_EQ(j.at("mean_tension_factor").get<double>(), 1.0);
+  // 150,000 lbf is above the tugs' 125,000 lbf (thesis ch. 5): answered, with the warning named.
+  ASSERT_FALSE(j.at("warnings").empty());
+  EXPECT_EQ(j.at("warnings").back().at("kind"), "above_tug_capacity");
+  const CommandResult text = run_towdb(q);
+  ASSERT_EQ(text.exit_code, 3) << text.err;
+  EXPECT_NE(text.out.find("interpolated from the values stored at the grid nodes"), std::string::npos) << text.out;
+  // A question outside the stored span is refused as it is with a mean tension.
+  const CommandResult out = run_towdb(base + " --speed-kt 9");
+  EXPECT_EQ(out.exit_code, 2);
+  EXPECT_NE(out.err.find("speed_kt = 9"), std::string::npos) << out.err;
 }
 
 TEST_F(CliQueryDefaultMean, AuditDrawsTheCalculatedMeanTension) {  // cli-audit-7

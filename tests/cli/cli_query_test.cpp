@@ -1,7 +1,8 @@
 // CLI tests for `towdb query`, `max-speed`, `min-length` and `export`.
 // Test plan:
 //   cli-query-1  query --json has the documented keys and the interpolated value
-//   cli-query-2  --csv prints one header and one row; text output names the checks
+//   cli-query-2  --csv prints one header and one row; text output names the checks with their margins;
+//                a failed check exits 3, both passed 0
 //   cli-query-3  --batch answers every CSV row; a bad row is reported and exits 2
 //   cli-query-4  bad input (unknown vessel, NaN, length < 0, heading 400, p = 0 and 1,
 //                missing flags, missing or corrupt database) -> exit 2 with a named message
@@ -59,7 +60,7 @@ class CliQuery : public ::testing::Test {
 
 TEST_F(CliQuery, JsonHasTheDocumentedKeys) {  // cli-query-1
   const CommandResult r = run_towdb(base() + "--speed-kt 6 --length-ft 1200 --mean-tension-lbf 70000 --json");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_EQ(r.exit_code, 3) << r.err;  // answered; the extreme check fails (below)
   const json j = json::parse(r.out);
   for (const char* key : {"dynamic_tension_kips", "extreme_tension_lbf", "breaking_strength_lbf", "checks", "warnings",
                           "nearest_cases", "uncertainty_kips"}) {
@@ -73,6 +74,13 @@ TEST_F(CliQuery, JsonHasTheDocumentedKeys) {  // cli-query-1
   ASSERT_EQ(j.at("checks").size(), 2u);
   EXPECT_EQ(j.at("checks")[0].at("limit_lbf").get<double>(), 240000.0);
   EXPECT_EQ(j.at("checks")[1].at("limit_lbf").get<double>(), 120000.0);
+  // Margins: limit - value, in lbf and percent of the limit (negative: failed).
+  const double extreme = 70000.0 + 1000.0 * expected_999(6.0, 25.0, 1200.0);
+  EXPECT_FALSE(j.at("checks")[0].at("passed").get<bool>());
+  EXPECT_REL_CLOSE(j.at("checks")[0].at("margin_lbf").get<double>(), 240000.0 - extreme, 1e-9);
+  EXPECT_REL_CLOSE(j.at("checks")[0].at("margin_percent").get<double>(), 100.0 * (240000.0 - extreme) / 240000.0, 1e-9);
+  EXPECT_TRUE(j.at("checks")[1].at("passed").get<bool>());
+  EXPECT_REL_CLOSE(j.at("checks")[1].at("margin_lbf").get<double>(), 50000.0, 1e-12);
   EXPECT_EQ(j.at("nearest_cases").size(), 4u);
   EXPECT_TRUE(j.at("warnings").is_array());
   EXPECT_EQ(j.at("query").at("heading_deg").get<double>(), 300.0);
@@ -80,7 +88,7 @@ TEST_F(CliQuery, JsonHasTheDocumentedKeys) {  // cli-query-1
 
 TEST_F(CliQuery, CsvAndTextOutput) {  // cli-query-2
   const CommandResult csv = run_towdb(base() + "--speed-kt 6 --length-ft 1200 --mean-tension-lbf 70000 --csv");
-  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  ASSERT_EQ(csv.exit_code, 3) << csv.err;  // a failed check (README, "Exit codes")
   std::istringstream in(csv.out);
   std::string header, row, extra;
   std::getline(in, header);
@@ -89,8 +97,13 @@ TEST_F(CliQuery, CsvAndTextOutput) {  // cli-query-2
   EXPECT_EQ(header.rfind("tug,tow,line,speed_kt,wind_kt,", 0), 0u) << header;
   EXPECT_NE(row.find(",fail,pass,"), std::string::npos) << row;  // 70 + 1000 x > 240,000 lbf
   const CommandResult text = run_towdb(base() + "--speed-kt 6 --length-ft 1200 --mean-tension-lbf 70000");
-  ASSERT_EQ(text.exit_code, 0) << text.err;
+  ASSERT_EQ(text.exit_code, 3) << text.err;
   EXPECT_NE(text.out.find("check extreme <= BS/1.5"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("FAIL (limit 240,000 lbf, exceeded by "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("pass (limit 120,000 lbf, margin 50,000 lbf = 41.7 %)"), std::string::npos) << text.out;
+  // Both checks pass on the 2,000 ft line (157 kips + 70,000 lbf < 240,000 lbf): exit 0.
+  const CommandResult ok = run_towdb(base() + "--speed-kt 6 --length-ft 2000 --mean-tension-lbf 70000");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err << ok.out;
   EXPECT_NE(text.out.find("nearest stored cases"), std::string::npos) << text.out;
 }
 
@@ -155,7 +168,7 @@ TEST_F(CliQuery, BadInputExitsTwoWithANamedMessage) {  // cli-query-4
   EXPECT_NE(range.err.find("speed_kt = 12 is outside the stored range [3, 9] kt"), std::string::npos) << range.err;
   const CommandResult extrap =
       run_towdb(base() + "--speed-kt 12 --length-ft 1200 --mean-tension-lbf 70000 --extrapolate --json");
-  ASSERT_EQ(extrap.exit_code, 0) << extrap.err;
+  ASSERT_EQ(extrap.exit_code, 3) << extrap.err;  // answered; the extreme check fails
   const json j = json::parse(extrap.out);
   EXPECT_EQ(j.at("warnings")[0].at("kind").get<std::string>(), "extrapolated");
   EXPECT_REL_CLOSE(j.at("dynamic_tension_kips").get<double>(), expected_999(12.0, 25.0, 1200.0), 1e-12);

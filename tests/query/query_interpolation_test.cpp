@@ -16,6 +16,9 @@
 //   query-interp-12 inverse queries land on the analytic crossing; "none passes"
 //   query-interp-13 nearest cases are sorted by distance and start at the node queried
 //   query-interp-14 leave-one-out error of a quadratic equals a h^2
+//   query-interp-15 relative mean-tension axis (EQ-QUERY-9): exact for data linear in m / T_calc; the default is
+//                   T_calc at the query; a factor outside the stored ones is refused in its own terms; a question
+//                   the absolute axis refuses is answered; the tugs' capacity warning
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -119,21 +122,25 @@ bool has_warning(const QueryResult& r, int kind) {
 
 // query-interp-1
 TEST_F(QueryTest, ReproducesEveryStoredCaseExactly) {
-  // EVIDENCE-OF: EQ-QUERY-6 (weights 1 at a node; mean tension at a stored value)
-  const GridSpec g = multilinear_grid();
-  const auto cases = grid_cases(g);
-  const std::string path = write(cases);
-  for (int space : {TOWDB_QUERY_SPACE_LINEAR, TOWDB_QUERY_SPACE_LOG}) {
-    Database db(path, space);
-    ASSERT_EQ(db.case_count(), static_cast<int>(cases.size()));
-    for (const SyntheticCase& c : cases) {
-      const QueryResult r =
-          db.query(request(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf));
-      EXPECT_EQ(r.values.gumbel_u_kips, c.u_kips);  // bit for bit
-      EXPECT_REL_CLOSE(r.values.gumbel_alpha_per_kip, c.alpha_per_kip, 1e-15);
-      EXPECT_REL_CLOSE(r.values.dynamic_999_kips, c.u_kips + reduced_variate_999() / c.alpha_per_kip, 1e-15);
-      EXPECT_EQ(r.values.interpolation_error_kips, 0.0);
-      EXPECT_EQ(r.values.extrapolated, 0);
+  // EVIDENCE-OF: EQ-QUERY-6 (weights 1 at a node; mean tension at a stored value), on the absolute
+  // and on the relative (EQ-QUERY-9) mean-tension axis.
+  for (bool relative : {false, true}) {
+    GridSpec g = multilinear_grid();
+    g.store_calculated = relative;
+    const auto cases = grid_cases(g);
+    const std::string path = write(cases, relative ? "relative.towdb" : "absolute.towdb");
+    for (int space : {TOWDB_QUERY_SPACE_LINEAR, TOWDB_QUERY_SPACE_LOG}) {
+      Database db(path, space);
+      ASSERT_EQ(db.case_count(), static_cast<int>(cases.size()));
+      for (const SyntheticCase& c : cases) {
+        const QueryResult r =
+            db.query(request(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf));
+        EXPECT_EQ(r.values.gumbel_u_kips, c.u_kips);  // bit for bit
+        EXPECT_REL_CLOSE(r.values.gumbel_alpha_per_kip, c.alpha_per_kip, 1e-15);
+        EXPECT_REL_CLOSE(r.values.dynamic_999_kips, c.u_kips + reduced_variate_999() / c.alpha_per_kip, 1e-15);
+        EXPECT_EQ(r.values.interpolation_error_kips, 0.0);
+        EXPECT_EQ(r.values.extrapolated, 0);
+      }
     }
   }
 }
@@ -238,12 +245,17 @@ TEST_F(QueryTest, ThesisAppendixACheckValue) {
 
 // query-interp-7
 TEST_F(QueryTest, ErrorEstimateIsExactForAQuadraticAndCiIsScaled) {
-  // EVIDENCE-OF: EQ-QUERY-7. Linear interpolation of f = a w^2 over a cell of
-  // width h errs by t (1 - t) h^2 a, and the second divided difference of a
-  // quadratic is exactly a, so estimate and error agree.
+  // EVIDENCE-OF: EQ-QUERY-7. Linear interpolation of f = a (w - w0)^2 over a
+  // cell of width h errs by t (1 - t) h^2 a, and the second divided difference
+  // of a quadratic is exactly a, so estimate and error agree. (w0 = 27.5 kt
+  // keeps the chord's rise over each cell, 50 a, small enough that the floor
+  // of half the chord estimate, t (1 - t) 25 a, does not exceed it.)
   constexpr double kA = 0.05;  // kips per kt^2
+  constexpr double kW0 = 27.5;
   GridSpec g;
-  g.u_kips = [](double s, double w, double, double l, double) { return 20.0 + kA * w * w + 0.5 * s - 0.001 * l; };
+  g.u_kips = [](double s, double w, double, double l, double) {
+    return 20.0 + kA * (w - kW0) * (w - kW0) + 0.5 * s - 0.001 * l;
+  };
   g.beta_kips = [](double, double, double, double, double) { return 5.0; };
   auto cases = grid_cases(g);
   for (auto& c : cases) {
@@ -254,7 +266,7 @@ TEST_F(QueryTest, ErrorEstimateIsExactForAQuadraticAndCiIsScaled) {
   for (double w : {22.0, 25.0, 28.5, 31.0, 33.0}) {
     const double s = 5.0, l = 1500.0, m = 60000.0;
     const QueryResult r = db.query(request(s, w, 60.0, l, m));
-    const double truth = 20.0 + kA * w * w + 0.5 * s - 0.001 * l + 5.0 * reduced_variate_999();
+    const double truth = 20.0 + kA * (w - kW0) * (w - kW0) + 0.5 * s - 0.001 * l + 5.0 * reduced_variate_999();
     const double actual_error = std::abs(r.values.dynamic_999_kips - truth);
     EXPECT_GT(actual_error, 0.1) << w;
     EXPECT_REL_CLOSE(r.values.interpolation_error_kips, actual_error, 1e-9) << w;
@@ -271,6 +283,19 @@ TEST_F(QueryTest, ErrorEstimateIsExactForAQuadraticAndCiIsScaled) {
   const QueryResult r = db.query(rq);
   EXPECT_EQ(r.values.interpolation_error_kips, 0.0);
   EXPECT_REL_CLOSE(r.values.uncertainty_kips, 4.0 * se(0.01, 10.0) / se(0.001, 1.0), 1e-12);
+
+  // The floor: on linear data (no curvature) a grid axis with three or more values still reports half the
+  // chord estimate, t (1 - t) |f(x_i+1) - f(x_i)| / 2 (docs/audit.md: the tension can change abruptly inside a
+  // cell); along an axis with only two values, the full chord estimate.
+  GridSpec lin;
+  lin.lengths_ft = {1000.0, 2000.0};
+  lin.u_kips = [](double, double w, double, double l, double) { return 10.0 + 2.0 * w + 0.01 * l; };
+  lin.beta_kips = [](double, double, double, double, double) { return 5.0; };
+  Database dl(write(grid_cases(lin), "linear.towdb"), TOWDB_QUERY_SPACE_LINEAR);
+  const QueryResult rw = dl.query(request(5.0, 22.0, 60.0, 1000.0, 60000.0));  // wind: t = 0.2 of 20 -> 30 kt
+  EXPECT_REL_CLOSE(rw.values.interpolation_error_kips, 0.5 * 0.2 * 0.8 * 20.0, 1e-9);
+  const QueryResult rl = dl.query(request(5.0, 30.0, 60.0, 1250.0, 60000.0));  // length: t = 0.25, two values
+  EXPECT_REL_CLOSE(rl.values.interpolation_error_kips, 0.25 * 0.75 * 10.0, 1e-9);
 }
 
 // query-interp-8
@@ -484,6 +509,107 @@ TEST_F(QueryTest, LeaveOneOutOfAQuadraticIsAHSquared) {
   const double y = reduced_variate_999();
   EXPECT_GE(sea.max_rel_error, kA * 100.0 / (20.0 + kA * 900.0 + 9.0 + 5.0 * y) * (1 - 1e-12));
   EXPECT_LE(sea.max_rel_error, kA * 100.0 / (20.0 + kA * 900.0 + 3.0 + 5.0 * y) * (1 + 1e-12));
+}
+
+// query-interp-15
+TEST_F(QueryTest, RelativeMeanTensionAxisIsExactForDataLinearInTheFactor) {
+  // EVIDENCE-OF: EQ-QUERY-9. T_calc(s, w) = 30,000 + 6,000 s + 500 w (synthetic_db.hpp), stored with every
+  // case; u and beta are multilinear in (s, w, h, l) and linear in f = m / T_calc, so interpolation along f
+  // at each node and multilinearly across nodes is exact, with f = m / T_calc(q) and T_calc(q) the
+  // geometric mean of the corners' T_calc with the cell's weights.
+  GridSpec g = multilinear_grid();
+  g.store_calculated = true;
+  const auto factor_of = [&g](double s, double w, double m) { return m / g.nominal_mean_lbf(s, w); };
+  g.u_kips = [&](double s, double w, double h, double l, double m) {
+    return u_multilinear(s, w, h, l, 0.0) + 30.0 * factor_of(s, w, m);
+  };
+  g.beta_kips = [&](double s, double w, double h, double l, double m) {
+    return beta_multilinear(s, w, h, l, 0.0) + 2.0 * factor_of(s, w, m);
+  };
+  const auto cases = grid_cases(g);
+  const std::string relative_path = write(cases, "relative.towdb");
+  Database db(relative_path, TOWDB_QUERY_SPACE_LINEAR);
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> us(3.0, 9.0), uw(20.0, 35.0), uh(0.0, 180.0), ul(800.0, 2000.0),
+      uf(0.6, 1.15);
+  auto calc_at = [&g](double s, double w) {
+    // Multilinear weights of the (speed, wind) cell, geometric mean of T_calc.
+    auto cell = [](const std::vector<double>& axis, double q) {
+      auto hi = std::upper_bound(axis.begin(), axis.end(), q);
+      if (hi == axis.end()) --hi;
+      const double x0 = *(hi - 1), x1 = *hi;
+      return std::tuple<double, double, double>(x0, x1, (q - x0) / (x1 - x0));
+    };
+    const auto [s0, s1, ts] = cell(g.speeds_kt, s);
+    const auto [w0, w1, tw] = cell(g.winds_kt, w);
+    return std::exp((1 - ts) * (1 - tw) * std::log(g.nominal_mean_lbf(s0, w0)) +
+                    ts * (1 - tw) * std::log(g.nominal_mean_lbf(s1, w0)) +
+                    (1 - ts) * tw * std::log(g.nominal_mean_lbf(s0, w1)) + ts * tw * std::log(g.nominal_mean_lbf(s1, w1)));
+  };
+  for (int i = 0; i < 200; ++i) {
+    const double s = us(rng), w = uw(rng), h = uh(rng), l = ul(rng), f = uf(rng);
+    const double t_calc = calc_at(s, w);
+    // Given mean tension.
+    QueryResult r = db.query(request(s, w, h, l, f * t_calc));
+    const double u = u_multilinear(s, w, h, l, 0.0) + 30.0 * f;
+    const double beta = beta_multilinear(s, w, h, l, 0.0) + 2.0 * f;
+    EXPECT_REL_CLOSE(r.values.dynamic_999_kips, u + reduced_variate_999() * beta, kRoundOffRelTol) << i;
+    EXPECT_REL_CLOSE(r.values.mean_tension_factor, f, kRoundOffRelTol);
+    EXPECT_REL_CLOSE(r.values.calculated_mean_tension_lbf, t_calc, kRoundOffRelTol);
+    EXPECT_EQ(r.values.extrapolated, 0);
+    // Default: the calculated mean tension at the query (f = 1).
+    r = db.query(request(s, w, h, l, kNoValue));
+    EXPECT_EQ(r.values.mean_tension_factor, 1.0);
+    EXPECT_REL_CLOSE(r.values.mean_tension_lbf, t_calc, kRoundOffRelTol);
+    EXPECT_REL_CLOSE(r.values.dynamic_999_kips,
+                     u_multilinear(s, w, h, l, 0.0) + 30.0 + reduced_variate_999() * (beta_multilinear(s, w, h, l, 0.0) + 2.0),
+                     kRoundOffRelTol);
+  }
+
+  // At 4 kt, 20 kt wind, factor 1.12: the 3 kt node's highest stored tension is 1.15 x 49,000 = 56,350 lbf,
+  // below 1.12 x T_calc(4 kt) ~ 60,400 lbf, so the absolute axis refuses what the relative axis answers.
+  const double m = 1.12 * calc_at(4.0, 20.0);
+  EXPECT_NO_THROW(db.query(request(4.0, 20.0, 90.0, 1000.0, m)));
+  std::vector<SyntheticCase> absolute = cases;
+  for (SyntheticCase& c : absolute) c.calculated_mean_tension_lbf = kNoValue;
+  Database db_abs(write(absolute, "absolute.towdb"), TOWDB_QUERY_SPACE_LINEAR);
+  try {
+    db_abs.query(request(4.0, 20.0, 90.0, 1000.0, m));
+    ADD_FAILURE() << "the absolute axis should refuse " << m << " lbf";
+  } catch (const QueryError& e) {
+    EXPECT_EQ(e.code(), TOWDB_QUERY_RANGE);
+  }
+  EXPECT_TRUE(std::isnan(db_abs.query(request(4.0, 20.0, 90.0, 1000.0, 50000.0)).values.mean_tension_factor));
+
+  // A factor outside the stored 0.6 - 1.15 is refused in its own terms, then extrapolated on request.
+  try {
+    db.query(request(4.0, 20.0, 90.0, 1000.0, 1.3 * calc_at(4.0, 20.0)));
+    ADD_FAILURE() << "factor 1.3 should be refused";
+  } catch (const QueryError& e) {
+    EXPECT_EQ(e.code(), TOWDB_QUERY_RANGE);
+    EXPECT_NE(std::string(e.what()).find("1.3 x the calculated mean tension"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("0.6 to 1.15 x its calculated value"), std::string::npos) << e.what();
+  }
+  QueryRequest ex = request(4.0, 20.0, 90.0, 1000.0, 1.3 * calc_at(4.0, 20.0));
+  ex.values.extrapolate = 1;
+  const QueryResult rx = db.query(ex);
+  EXPECT_REL_CLOSE(rx.values.dynamic_999_kips,
+                   u_multilinear(4.0, 20.0, 90.0, 1000.0, 0.0) + 30.0 * 1.3 +
+                       reduced_variate_999() * (beta_multilinear(4.0, 20.0, 90.0, 1000.0, 0.0) + 2.0 * 1.3),
+                   kRoundOffRelTol);
+  EXPECT_EQ(rx.values.extrapolated, 1);
+
+  // Above the tugs' 125,000 lbf (thesis ch. 5): answered, with a warning. T_calc(9 kt, 35 kt) = 101,500 lbf,
+  // so 140,000 lbf is factor 1.38 (extrapolated).
+  QueryRequest above = request(9.0, 35.0, 0.0, 2000.0, 140000.0);
+  above.values.extrapolate = 1;
+  EXPECT_TRUE(has_warning(db.query(above), TOWDB_QUERY_WARN_ABOVE_CAPACITY));
+  EXPECT_FALSE(has_warning(db.query(request(9.0, 35.0, 0.0, 2000.0, 100000.0)), TOWDB_QUERY_WARN_ABOVE_CAPACITY));
+
+  // Leave-one-out reads the neighbours at the node's own factor: exact for this data along speed.
+  const towdb_query_loo speed = db.leave_one_out(TOWDB_QUERY_SPACE_LINEAR, TOWDB_QUERY_AXIS_SPEED);
+  ASSERT_GT(speed.samples, 0);
+  EXPECT_LT(speed.max_rel_error, 1e-12);
 }
 
 }  // namespace

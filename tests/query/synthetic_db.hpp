@@ -26,6 +26,7 @@ struct SyntheticCase {
   std::string spectrum = "pierson-moskowitz";
   double speed_kt = 5.0, wind_kt = 20.0, hs_ft = kNoValue, tp_s = kNoValue;
   double heading_deg = 0.0, length_ft = 2000.0, mean_tension_lbf = 60000.0;
+  double calculated_mean_tension_lbf = kNoValue;  // NaN: NULL (no EQ-QUERY-9 axis)
   int days = 500;
   double u_kips = 50.0, alpha_per_kip = 0.2;
   double ci_level = 0.9, ci_low_kips = kNoValue, ci_high_kips = kNoValue;  // NaN: +-5 % of dynamic_999
@@ -42,8 +43,8 @@ inline void write_synthetic_db(const std::filesystem::path& path, const std::vec
   db.transaction([&] {
     auto ins_case = db.prepare(
         "INSERT INTO cases (case_id, case_key, inputs_sha256, tug_name, tow_name, speed_kt, spectrum, wind_kt, hs_ft, "
-        "tp_s, heading_deg, line_type, length_ft, mean_tension_lbf, days, seed, status) "
-        "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17)");
+        "tp_s, heading_deg, line_type, length_ft, mean_tension_lbf, days, seed, status, calculated_mean_tension_lbf) "
+        "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18)");
     auto ins_result = db.prepare(
         "INSERT INTO results (case_id, gumbel_u_kips, gumbel_alpha_per_kip, daily_max_mean_kips, "
         "daily_max_variance_kips2, dynamic_999_kips, dynamic_99_kips, ci_level, ci_low_kips, ci_high_kips, "
@@ -73,7 +74,8 @@ inline void write_synthetic_db(const std::filesystem::path& path, const std::vec
           .bind(14, c.mean_tension_lbf)
           .bind(15, c.days)
           .bind(16, k)
-          .bind(17, c.status);
+          .bind(17, c.status)
+          .bind(18, opt(c.calculated_mean_tension_lbf));
       ins_case.run();
       if (c.status != "done") continue;
       const std::int64_t id = db.last_insert_rowid();
@@ -122,6 +124,8 @@ struct GridSpec {
   std::function<double(double speed_kt, double wind_kt)> nominal_mean_lbf = [](double s, double w) {
     return 30000.0 + 6000.0 * s + 500.0 * w;
   };
+  // Store the nominal mean tension as each case's calculated one (EQ-QUERY-9).
+  bool store_calculated = false;
   std::function<double(double s, double w, double h, double l, double m)> u_kips;
   std::function<double(double s, double w, double h, double l, double m)> beta_kips;
 };
@@ -152,6 +156,7 @@ inline std::vector<SyntheticCase> grid_cases(const GridSpec& g) {
             c.heading_deg = h;
             c.length_ft = l;
             c.mean_tension_lbf = f * g.nominal_mean_lbf(s, w);
+            if (g.store_calculated) c.calculated_mean_tension_lbf = g.nominal_mean_lbf(s, w);
             c.u_kips = g.u_kips(s, w, h, l, c.mean_tension_lbf);
             c.alpha_per_kip = 1.0 / g.beta_kips(s, w, h, l, c.mean_tension_lbf);
             c.breaking_strength_lbf = g.breaking_strength_lbf;

@@ -80,6 +80,12 @@ TEST(SweepBuild, StoresEveryCaseInSchemaUnits) {  // sweep-build-1
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM builds WHERE status = 'completed' AND cases_done = 18"), 1);
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM vessels"), 6);  // T-ATF, ARS 50, FFG 7, YRBM, AE 26, CG 47
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE fit_id IS NULL"), 0);
+  // Schema 3: the 16 grid cases store T_calc (mean = 1.15 T_calc for their "calculated+15%" half), the two
+  // [[case]] entries NULL (schema/README.md).
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE calculated_mean_tension_lbf IS NOT NULL"), 16);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE mean_tension_label = 'calculated+15%' AND "
+                          "abs(mean_tension_lbf / calculated_mean_tension_lbf - 1.15) < 1e-12"),
+            8);
 
   // Every stored number against the runner's SI value converted by hand.
   store::Database d = store::Database::open(db, store::Database::Mode::kReadOnly);

@@ -55,6 +55,14 @@ TEST(SweepFile, ThesisTable53GridExpands) {  // sweep-file-1
     // EQ-SWEEP-3: a reduced speed is one where the calculated tension is within the limit.
     if (c.mean_tension_label == "calculated+15%") {
       EXPECT_LE(c.mean_tension_lbf / 1.15, 125000.0 * (1 + 1e-12)) << c.tow << " " << c.speed_kt;
+      // Every grid case in a wind sea carries T_calc of its (reduced) speed: mean = factor x T_calc
+      // (the column the query's EQ-QUERY-9 axis reads).
+      ASSERT_TRUE(c.calculated_mean_tension_lbf.has_value());
+      EXPECT_NEAR(c.mean_tension_lbf / *c.calculated_mean_tension_lbf, 1.15, 1e-12);
+    }
+    if (c.mean_tension_label == "hull+half-propeller") {
+      ASSERT_TRUE(c.calculated_mean_tension_lbf.has_value());
+      EXPECT_LT(c.mean_tension_lbf, *c.calculated_mean_tension_lbf);
     }
   }
   EXPECT_EQ(ae26_speeds, (std::set<double>{5.0, 8.5}));
@@ -214,6 +222,7 @@ TEST(SweepFile, SerialisationIsBitExact) {  // sweep-file-5
     EXPECT_TRUE(r.at_end());
     EXPECT_EQ(sweep::case_keys(back, catalog(), "x").inputs_sha256, sweep::case_keys(c, catalog(), "x").inputs_sha256);
     EXPECT_EQ(back.condition_key, c.condition_key);
+    EXPECT_EQ(back.calculated_mean_tension_lbf, c.calculated_mean_tension_lbf);
     const sweep::CaseOutcome expected = closed_form_outcome(c, catalog());
     ASSERT_EQ(out.days.size(), expected.days.size());
     for (std::size_t d = 0; d < out.days.size(); ++d) {

@@ -33,13 +33,14 @@
  *             Mean tension is NOT a grid axis: each grid node has its own 1-4
  *             stored mean tensions m_1 < ... < m_n, and the node's parameters
  *             are interpolated piecewise-linearly in m at the query's mean
- *             tension before the corners are combined.
+ *             tension before the corners are combined (at m itself, or at
+ *             f T_calc,c on the relative axis of EQ-QUERY-9).
  *             Interpolated quantities: g = u and g = beta, either as
  *               linear space: g = sum_c w_c g_c, or
  *               log space:    g = exp(sum_c w_c ln g_c).
  *             The space is chosen when the database is opened, by the
- *             leave-one-out test of EQ-QUERY-8 (smaller median error wins;
- *             linear on a tie, and linear whenever some stored u <= 0).
+ *             leave-one-out test of EQ-QUERY-8 (smaller 90th-percentile error
+ *             wins; linear on a tie, and linear whenever some stored u <= 0).
  *             Result: in linear space x(p, D) = sum_c w_c x_c(p, D), so the
  *             answer is monotone along an axis whenever the corner values are
  *             (checked: a warning when more wind or less towline length would
@@ -48,9 +49,19 @@
  *             of a function with second derivative f''):
  *               e_a = t_a (1 - t_a) h_a^2 |f''| / 2,
  *             f''/2 taken as the second divided difference of x(p, D) over
- *             the cell's two nodes and the next node outside the cell; the
- *             estimate is summed over the axes and the mean tension. In log
- *             space f = ln x and the estimate is multiplied by x (dx = x d ln x).
+ *             the cell's two nodes and the next node outside the cell (the
+ *             larger of the two sides where both exist). Along an axis (or a
+ *             node's mean tensions) with only the cell's two values there is
+ *             no curvature to measure, and
+ *               e_a = t_a (1 - t_a) |f(x_{i+1}) - f(x_i)|,
+ *             the error of a chord under a curve that sags by a quarter of its
+ *             rise at mid-cell (f ~ x^2 across the cell); on a grid axis with
+ *             curvature information e_a is at least half that (the tension
+ *             can change abruptly inside a cell, e.g. slack in exactly
+ *             following seas only; the factor is calibrated by towdb audit,
+ *             docs/audit.md). The estimate is
+ *             summed over the axes and the mean tension. In log space f = ln x
+ *             and the estimate is multiplied by x (dx = x d ln x).
  *             Total uncertainty = sqrt(e^2 + c^2), c the stored confidence
  *             half-width (ci_high - ci_low)/2 of dynamic_999, scaled to
  *             (p, D) by the method-of-moments quantile standard error
@@ -64,6 +75,17 @@
  *             relative error |x_pred - x_stored| / x_stored of the 0.001/day
  *             dynamic tension. This is the error at twice the grid spacing
  *             (about 4x the mid-cell error of EQ-QUERY-7 for smooth data).
+ * EQ-QUERY-9  Mean-tension axis. Where every stored case carries the
+ *             calculated mean tension T_calc of its own speed, wind and
+ *             heading (cases.calculated_mean_tension_lbf, the sweep's
+ *             EQ-SWEEP-1), the mean tension is interpolated as the factor
+ *             f = m / T_calc, which means the same at every node:
+ *               T_calc(q) = exp(sum_c w_c ln T_calc,c)  (the cell's weights),
+ *               f = m / T_calc(q)  (f = 1 when no mean tension is given),
+ *             and node c is read at f T_calc,c, piecewise linearly in its
+ *             stored mean tensions. A node refuses an f outside its stored
+ *             factors unless extrapolation is asked for. Without stored
+ *             T_calc the mean tension is absolute (the same m at every node).
  *
  * CONVENTIONS AND UNITS
  *   Units are those of the database, in every name: kt, ft, lbf, kips
@@ -140,6 +162,7 @@ extern "C" {
 #define TOWDB_QUERY_WARN_INCOMPLETE_GRID 5    /* missing grid nodes were left out (extrapolate only) */
 #define TOWDB_QUERY_WARN_HIGH_TENSION 6       /* dynamic tension above 300 kips: reduced accuracy (thesis 6.2) */
 #define TOWDB_QUERY_WARN_BREAKING_DIFFERS 7   /* the corner cases disagree on breaking strength */
+#define TOWDB_QUERY_WARN_ABOVE_CAPACITY 8     /* mean tension above the tugs' 125,000 lbf (thesis ch. 5) */
 
 typedef struct towdb_query_db towdb_query_db;
 
@@ -155,7 +178,8 @@ typedef struct towdb_query_request {
   double tp_s;              /* peak period [s] with hs_ft; NaN when the database has one period */
   double heading_deg;       /* wave heading [deg] in [0, 360]; 0 = following seas */
   double length_ft;         /* towline (hawser) length [ft], > 0 */
-  double mean_tension_lbf;  /* mean towline tension [lbf] > 0; NaN: each node's highest stored one */
+  double mean_tension_lbf;  /* mean towline tension [lbf] > 0; NaN: the calculated one (EQ-QUERY-9), or
+                               each node's highest stored one where the database has no calculated values */
   double probability;       /* exceedance probability of the tow's maximum, in (0, 1); default 0.001 */
   double tow_days;          /* tow duration [days] >= 1; default 1 */
   int extrapolate;          /* 0: refuse outside the data (default); 1: extrapolate and warn */
@@ -185,6 +209,8 @@ typedef struct towdb_query_result {
   int extrapolated;                /* 1 when any axis was extrapolated */
   int warning_count;               /* warnings: towdb_query_warning(db, 0 .. count-1) */
   int nearest_count;               /* nearest stored cases: towdb_query_nearest(db, i, ...) */
+  double calculated_mean_tension_lbf; /* EQ-QUERY-9 T_calc at the query; NaN when not stored */
+  double mean_tension_factor;         /* EQ-QUERY-9 mean / T_calc; NaN when not stored */
 } towdb_query_result;
 
 /* One stored case near the query, with its own values. */
