@@ -124,8 +124,9 @@ ordered_json result_json(const QueryRequest& rq, const QueryResult& r, bool on_b
   const towdb_query_result& v = r.values;
   const towdb_query_request& q = rq.values;
   ordered_json j;
-  j["query"] = {{"tug", rq.tug},
-                {"tow", rq.tow},
+  // The database's vessel names (as matched), not the spelling typed.
+  j["query"] = {{"tug", r.tug.empty() ? rq.tug : r.tug},
+                {"tow", r.tow.empty() ? rq.tow : r.tow},
                 {"line", rq.line},
                 {"speed_kt", nullable(q.speed_kt)},
                 {"wind_kt", nullable(q.wind_kt)},
@@ -211,20 +212,26 @@ std::string csv_cell(const std::string& s) {
 }
 
 std::string csv_num(double v) { return std::isfinite(v) ? fmt(v) : ""; }
+// A computed value in CSV, rounded as in the text output (1 lbf, 0.1 kips);
+// JSON keeps full precision.
+std::string csv_rounded(double v, int decimals) { return std::isfinite(v) ? fmt(v, decimals) : ""; }
 
 std::string csv_row(const QueryRequest& rq, const QueryResult* r, const std::string& error) {
   const towdb_query_request& q = rq.values;
-  std::string s = csv_cell(rq.tug) + "," + csv_cell(rq.tow) + "," + csv_cell(rq.line) + "," + csv_num(q.speed_kt) +
+  const bool named = r && !r->tug.empty();
+  std::string s = csv_cell(named ? r->tug : rq.tug) + "," + csv_cell(named ? r->tow : rq.tow) + "," +
+                  csv_cell(rq.line) + "," + csv_num(q.speed_kt) +
                   "," + csv_num(q.wind_kt) + "," + csv_num(q.hs_ft) + "," + csv_num(q.tp_s) + "," +
                   csv_num(q.heading_deg) + "," + csv_num(q.length_ft) + ",";
   if (r) {
     const towdb_query_result& v = r->values;
     std::string warnings;
     for (const auto& w : r->warnings) warnings += (warnings.empty() ? "" : " | ") + w.message;
-    s += csv_num(v.mean_tension_lbf) + "," + csv_num(q.probability) + "," + csv_num(q.tow_days) + "," +
-         csv_num(v.dynamic_tension_kips) + "," + csv_num(v.dynamic_999_kips) + "," + csv_num(v.extreme_tension_lbf) +
-         "," + csv_num(v.breaking_strength_lbf) + "," + (v.extreme_check_passed ? "pass" : "fail") + "," +
-         (v.mean_check_passed ? "pass" : "fail") + "," + csv_num(v.uncertainty_kips) + "," +
+    s += csv_rounded(v.mean_tension_lbf, 0) + "," + csv_num(q.probability) + "," + csv_num(q.tow_days) + "," +
+         csv_rounded(v.dynamic_tension_kips, 1) + "," + csv_rounded(v.dynamic_999_kips, 1) + "," +
+         csv_rounded(v.extreme_tension_lbf, 0) + "," + csv_rounded(v.breaking_strength_lbf, 0) + "," +
+         (v.extreme_check_passed ? "pass" : "fail") + "," + (v.mean_check_passed ? "pass" : "fail") + "," +
+         csv_rounded(v.uncertainty_kips, 1) + "," +
          (v.extrapolated ? "1" : "0") + "," + csv_cell(warnings) + ",";
   } else {
     s += csv_num(q.mean_tension_lbf) + "," + csv_num(q.probability) + "," + csv_num(q.tow_days) + ",,,,,,,,,," +
@@ -365,7 +372,7 @@ std::string check_text(double value, double limit, int passed) {
 void print_text(const QueryRequest& rq, const QueryResult& r, bool on_brake) {
   const towdb_query_result& v = r.values;
   const towdb_query_request& q = rq.values;
-  std::cout << rq.tug << " towing " << rq.tow << " on " << rq.line << ", " << fmt(q.speed_kt) << " kt, "
+  std::cout << r.tug << " towing " << r.tow << " on " << rq.line << ", " << fmt(q.speed_kt) << " kt, "
             << (std::isnan(q.wind_kt) ? "Hs " + fmt(q.hs_ft) + " ft" : "wind " + fmt(q.wind_kt) + " kt")
             << ", heading " << fmt(q.heading_deg) << " deg, length " << fmt(q.length_ft) << " ft\n";
   TextTable t({"quantity", "value"});

@@ -18,6 +18,7 @@ struct towdb_query_db {
   std::string errmsg;
   std::vector<towdb::query::Warning> warnings;
   std::vector<towdb::query::NearCase> nearest;
+  std::string tug, tow;  // names of the last answer's vessels (towdb_query_names)
 };
 
 namespace {
@@ -118,6 +119,8 @@ int run_search(towdb_query_db* db, const towdb_query_request* request, towdb_que
   return guarded(db, [&] {
     db->warnings.clear();
     db->nearest.clear();
+    db->tug.clear();
+    db->tow.clear();
     Request q = to_request(request);
     const towdb::query::SearchResult s = speed ? db->engine->max_speed(q) : db->engine->min_length(q);
     search->found = s.found ? 1 : 0;
@@ -132,6 +135,8 @@ int run_search(towdb_query_db* db, const towdb_query_request* request, towdb_que
         (speed ? q.speed_kt : q.length_ft) = s.value;
         Answer a = db->engine->query(q);
         to_result(a, at_value);
+        db->tug = a.tug;
+        db->tow = a.tow;
         warnings.insert(warnings.end(), a.warnings.begin(), a.warnings.end());
         db->nearest = std::move(a.nearest);
         at_value->warning_count = static_cast<int>(warnings.size());
@@ -195,11 +200,22 @@ int towdb_query_run(towdb_query_db* db, const towdb_query_request* request, towd
   return guarded(db, [&] {
     db->warnings.clear();
     db->nearest.clear();
+    db->tug.clear();
+    db->tow.clear();
     Answer a = db->engine->query(to_request(request));
     to_result(a, result);
     db->warnings = std::move(a.warnings);
     db->nearest = std::move(a.nearest);
+    db->tug = std::move(a.tug);
+    db->tow = std::move(a.tow);
   });
+}
+
+int towdb_query_names(const towdb_query_db* db, const char** tug, const char** tow) {
+  if (!db || !tug || !tow || db->tug.empty()) return TOWDB_QUERY_MISUSE;
+  *tug = db->tug.c_str();
+  *tow = db->tow.c_str();
+  return TOWDB_QUERY_OK;
 }
 
 const char* towdb_query_warning(const towdb_query_db* db, int index, int* kind) {

@@ -898,6 +898,8 @@ Answer Engine::query(const Request& r) const {
   const double c = std::log(r.tow_days) + gumbel_reduced_variate(r.probability);
   const double c999 = gumbel_reduced_variate(kPlanningProbability);
   Answer ans;
+  ans.tug = g.tug;
+  ans.tow = g.tow;
   ans.space = s;
   ans.gumbel_u_kips = ev.u;
   ans.gumbel_alpha_per_kip = 1.0 / ev.beta;

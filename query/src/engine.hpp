@@ -112,6 +112,7 @@ struct NearCase {
 };
 
 struct Answer {
+  std::string tug, tow;  // the database's names of the vessels matched
   double dynamic_tension_kips = kNaN;
   double dynamic_999_kips = kNaN;
   double mean_tension_lbf = kNaN;

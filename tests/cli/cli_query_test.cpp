@@ -13,6 +13,7 @@
 //   cli-query-8  query --leave-one-out --json reports both spaces and the chosen one
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -84,6 +85,14 @@ TEST_F(CliQuery, JsonHasTheDocumentedKeys) {  // cli-query-1
   EXPECT_EQ(j.at("nearest_cases").size(), 4u);
   EXPECT_TRUE(j.at("warnings").is_array());
   EXPECT_EQ(j.at("query").at("heading_deg").get<double>(), 300.0);
+  EXPECT_EQ(j.at("query").at("tow").get<std::string>(), "LHA 1");
+  // Names as the database spells them, whatever the spelling asked (here "tatf", "lha-1").
+  const CommandResult lower = run_towdb("query --db '" + db_ +
+                                        "' --tug tatf --tow lha-1 --line wire --wind-kt 25 --heading-deg 300 "
+                                        "--speed-kt 6 --length-ft 1200 --mean-tension-lbf 70000 --json");
+  ASSERT_EQ(lower.exit_code, 3) << lower.err;
+  EXPECT_EQ(json::parse(lower.out).at("query").at("tug").get<std::string>(), "T-ATF 166");
+  EXPECT_EQ(json::parse(lower.out).at("query").at("tow").get<std::string>(), "LHA 1");
 }
 
 TEST_F(CliQuery, CsvAndTextOutput) {  // cli-query-2
@@ -96,6 +105,12 @@ TEST_F(CliQuery, CsvAndTextOutput) {  // cli-query-2
   EXPECT_FALSE(std::getline(in, extra));
   EXPECT_EQ(header.rfind("tug,tow,line,speed_kt,wind_kt,", 0), 0u) << header;
   EXPECT_NE(row.find(",fail,pass,"), std::string::npos) << row;  // 70 + 1000 x > 240,000 lbf
+  // Computed values rounded as in the text (0.1 kips, 1 lbf); JSON keeps full precision.
+  char expected_cells[96];
+  std::snprintf(expected_cells, sizeof expected_cells, ",70000,0.001,1,%.1f,%.1f,%.0f,360000,",
+                expected_999(6.0, 25.0, 1200.0), expected_999(6.0, 25.0, 1200.0),
+                70000.0 + 1000.0 * expected_999(6.0, 25.0, 1200.0));
+  EXPECT_NE(row.find(expected_cells), std::string::npos) << row << "\nexpected " << expected_cells;
   const CommandResult text = run_towdb(base() + "--speed-kt 6 --length-ft 1200 --mean-tension-lbf 70000");
   ASSERT_EQ(text.exit_code, 3) << text.err;
   EXPECT_NE(text.out.find("check extreme <= BS/1.5"), std::string::npos) << text.out;

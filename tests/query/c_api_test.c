@@ -120,6 +120,20 @@ int towdb_c_api_checks(const char* good_path, const char* missing_path, double e
   CHECK(fabs(res.dynamic_999_kips - expected_999_kips) <= 1e-12 * expected_999_kips);
   CHECK(res.nearest_count >= 1);
   CHECK(towdb_query_nearest(db, 0, &near_case) == TOWDB_QUERY_OK && near_case.case_id > 0);
+  /* The database's names of the vessels matched, whatever the spelling asked. */
+  {
+    const char* tug_name = NULL;
+    const char* tow_name = NULL;
+    r.tug = "tatf";
+    r.tow = "lha-1";
+    CHECK(towdb_query_run(db, &r, &res) == TOWDB_QUERY_OK);
+    CHECK(towdb_query_names(db, &tug_name, &tow_name) == TOWDB_QUERY_OK);
+    CHECK(tug_name != NULL && strcmp(tug_name, "T-ATF 166") == 0);
+    CHECK(tow_name != NULL && strcmp(tow_name, "LHA 1") == 0);
+    CHECK(towdb_query_names(db, NULL, &tow_name) == TOWDB_QUERY_MISUSE);
+    CHECK(towdb_query_names(NULL, &tug_name, &tow_name) == TOWDB_QUERY_MISUSE);
+    r = valid_request();
+  }
   CHECK(towdb_query_run(NULL, &r, &res) == TOWDB_QUERY_MISUSE);
   CHECK(towdb_query_run(db, NULL, &res) == TOWDB_QUERY_MISUSE);
   CHECK(towdb_query_run(db, &r, NULL) == TOWDB_QUERY_MISUSE);

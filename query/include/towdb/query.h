@@ -270,6 +270,10 @@ TOWDB_QUERY_API int towdb_query_run(towdb_query_db* db, const towdb_query_reques
  * *kind (may be NULL) receives its TOWDB_QUERY_WARN_* kind. */
 TOWDB_QUERY_API const char* towdb_query_warning(const towdb_query_db* db, int index, int* kind);
 TOWDB_QUERY_API int towdb_query_nearest(const towdb_query_db* db, int index, towdb_query_case* out);
+/* The database's names of the tug and tow that the last successful run (or
+ * found search) matched, e.g. "YRBM" for a request's "yrbm"; owned by the
+ * handle. TOWDB_QUERY_MISUSE when there is no such answer. */
+TOWDB_QUERY_API int towdb_query_names(const towdb_query_db* db, const char** tug, const char** tow);
 
 /* Highest speed in the stored speed range at which both checks of EQ-QUERY-5
  * pass (request->speed_kt ignored); `at_value` (may be NULL) receives the

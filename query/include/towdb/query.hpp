@@ -50,6 +50,7 @@ struct QueryWarning {
 };
 
 struct QueryResult {
+  std::string tug, tow;  // the database's names of the matched vessels (towdb_query_names)
   towdb_query_result values{};
   std::vector<QueryWarning> warnings;
   std::vector<towdb_query_case> nearest;
@@ -107,6 +108,12 @@ class Database {
     }
     towdb_query_case c{};
     for (int i = 0; towdb_query_nearest(db_.get(), i, &c) == TOWDB_QUERY_OK; ++i) out->nearest.push_back(c);
+    const char* tug = nullptr;
+    const char* tow = nullptr;
+    if (towdb_query_names(db_.get(), &tug, &tow) == TOWDB_QUERY_OK) {
+      out->tug = tug;
+      out->tow = tow;
+    }
   }
 
   InverseResult inverse(const QueryRequest& request, bool speed) {
