@@ -372,9 +372,11 @@ std::string check_text(double value, double limit, int passed) {
 void print_text(const QueryRequest& rq, const QueryResult& r, bool on_brake) {
   const towdb_query_result& v = r.values;
   const towdb_query_request& q = rq.values;
-  std::cout << r.tug << " towing " << r.tow << " on " << rq.line << ", " << fmt(q.speed_kt) << " kt, "
+  // Speed and length rounded as a planner reads them (a search's value has all its bits).
+  std::cout << r.tug << " towing " << r.tow << " on " << rq.line << ", " << fmt(std::round(q.speed_kt * 100.0) / 100.0)
+            << " kt, "
             << (std::isnan(q.wind_kt) ? "Hs " + fmt(q.hs_ft) + " ft" : "wind " + fmt(q.wind_kt) + " kt")
-            << ", heading " << fmt(q.heading_deg) << " deg, length " << fmt(q.length_ft) << " ft\n";
+            << ", heading " << fmt(q.heading_deg) << " deg, length " << fmt(std::round(q.length_ft)) << " ft\n";
   TextTable t({"quantity", "value"});
   t.add_row({"mean tension lbf", fmt_grouped(v.mean_tension_lbf)});
   if (std::isfinite(v.mean_tension_factor)) {
@@ -640,7 +642,7 @@ int run_inverse(const QueryArgs& a, bool speed) {
       std::cout << (speed ? "searched speeds " : "searched towline lengths ") << fmt(s.range_low) << " to "
                 << fmt(s.range_high) << unit << " (the stored range)\n";
       if (s.found) {
-        std::cout << (speed ? "maximum speed passing the Navy Towing Manual checks: "
+        std::cout << (speed ? "maximum speed passing the Navy Towing Manual checks within the tugs' capacity: "
                             : "minimum towline length passing the Navy Towing Manual checks: ")
                   << fmt(s.value, speed ? 2 : 0) << unit << "\n\n";
         QueryRequest at = rq;

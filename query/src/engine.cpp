@@ -1158,12 +1158,18 @@ SearchResult Engine::search(const Request& request, int axis, bool maximise) con
   std::string first_failure;
   int failures = 0;
   // 1: passes both checks; 0: fails one; -1: cannot be evaluated (outside the data there).
+  // Passing also needs a mean tension the tugs can hold (options_.tug_capacity_lbf,
+  // thesis ch. 5, the sweep's EQ-SWEEP-3 limit): with the calculated mean
+  // tension, which rises with speed, that is the tow's speed limit.
+  double above_capacity_lbf = kNaN;
   auto passes = [&](double x) {
     ++res.evaluations;
     field = x;
     try {
       const Answer a = query(base);
-      return a.extreme_check_passed && a.mean_check_passed ? 1 : 0;
+      const bool holdable = a.mean_tension_lbf <= options_.tug_capacity_lbf;
+      if (!holdable && std::isnan(above_capacity_lbf)) above_capacity_lbf = a.mean_tension_lbf;
+      return a.extreme_check_passed && a.mean_check_passed && holdable ? 1 : 0;
     } catch (const InputError& e) {
       if (first_failure.empty()) first_failure = e.what();
       ++failures;
@@ -1210,6 +1216,13 @@ SearchResult Engine::search(const Request& request, int axis, bool maximise) con
     // the stored data (as query() would say), not "no value passes".
     throw InputError("no " + name + " in the stored range " + format_value(res.range_low) + " to " +
                      format_value(res.range_high) + " can be evaluated for these conditions; first: " + first_failure);
+  }
+  if (!std::isnan(above_capacity_lbf)) {
+    res.warnings.push_back({WarningKind::kAboveCapacity,
+                            "some " + name + " values searched need a mean tension above the tugs' " +
+                                format_value(options_.tug_capacity_lbf) + " lbf (first seen: " +
+                                format_value(std::round(above_capacity_lbf)) +
+                                " lbf; thesis ch. 5): counted as failing"});
   }
   if (failures > 0) {
     res.warnings.push_back({WarningKind::kIncompleteGrid,

@@ -19,6 +19,7 @@
 //   query-interp-15 relative mean-tension axis (EQ-QUERY-9): exact for data linear in m / T_calc; the default is
 //                   T_calc at the query; a factor outside the stored ones is refused in its own terms; a question
 //                   the absolute axis refuses is answered; the tugs' capacity warning
+//   query-interp-16 max-speed stops where the calculated mean tension reaches the tugs' 125,000 lbf
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -610,6 +611,33 @@ TEST_F(QueryTest, RelativeMeanTensionAxisIsExactForDataLinearInTheFactor) {
   const towdb_query_loo speed = db.leave_one_out(TOWDB_QUERY_SPACE_LINEAR, TOWDB_QUERY_AXIS_SPEED);
   ASSERT_GT(speed.samples, 0);
   EXPECT_LT(speed.max_rel_error, 1e-12);
+}
+
+// query-interp-16
+TEST_F(QueryTest, MaxSpeedStopsAtTheTugsCapacity) {
+  // EVIDENCE-OF: thesis ch. 5 (125,000 lbf, "beyond the capacity of the tugs"), EQ-QUERY-9. T_calc = 20,000 s
+  // lbf at every node; the Towing Manual checks pass below 166,667 lbf (dynamic ~ 27 kips, BS 500,000 lbf, so
+  // the mean limit BS/3 lies above the tugs' capacity). With the
+  // calculated default mean tension, T_calc(q) = 100,000 x 1.4^t across the 5-7 kt cell (geometric), which
+  // reaches 125,000 lbf at t = ln 1.25 / ln 1.4: s = 5 + 2 t = 6.3265 kt.
+  GridSpec g;
+  g.store_calculated = true;
+  g.breaking_strength_lbf = 500000.0;
+  g.nominal_mean_lbf = [](double s, double) { return 20000.0 * s; };
+  g.u_kips = [](double, double, double, double, double) { return 20.0; };
+  g.beta_kips = [](double, double, double, double, double) { return 1.0; };
+  Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LINEAR);
+  QueryRequest rq = request(kNoValue, 30.0, 90.0, 1500.0, kNoValue);
+  const auto r = db.max_speed(rq);
+  ASSERT_EQ(r.search.found, 1);
+  EXPECT_NEAR(r.search.value, 5.0 + 2.0 * std::log(1.25) / std::log(1.4), 1e-4);
+  EXPECT_LE(r.at_value.values.mean_tension_lbf, 125000.0);
+  EXPECT_TRUE(has_warning(r.at_value, TOWDB_QUERY_WARN_ABOVE_CAPACITY));
+  // A given mean tension the tugs cannot hold: no speed passes, and the warning says why.
+  rq.values.mean_tension_lbf = 130000.0;
+  const auto none = db.max_speed(rq);
+  EXPECT_EQ(none.search.found, 0);
+  EXPECT_TRUE(has_warning(none.at_value, TOWDB_QUERY_WARN_ABOVE_CAPACITY));
 }
 
 }  // namespace

@@ -276,9 +276,12 @@ TOWDB_QUERY_API int towdb_query_nearest(const towdb_query_db* db, int index, tow
 TOWDB_QUERY_API int towdb_query_names(const towdb_query_db* db, const char** tug, const char** tow);
 
 /* Highest speed in the stored speed range at which both checks of EQ-QUERY-5
- * pass (request->speed_kt ignored); `at_value` (may be NULL) receives the
- * answer there. Likewise the shortest towline length (request->length_ft
- * ignored). Extrapolation is never used by a search. */
+ * pass and the mean tension is within the tugs' 125,000 lbf (thesis ch. 5;
+ * with the calculated default mean tension, which rises with speed, that is
+ * the tow's speed limit; TOWDB_QUERY_WARN_ABOVE_CAPACITY says when it bound)
+ * (request->speed_kt ignored); `at_value` (may be NULL) receives the answer
+ * there. Likewise the shortest towline length (request->length_ft ignored).
+ * Extrapolation is never used by a search. */
 TOWDB_QUERY_API int towdb_query_max_speed(towdb_query_db* db, const towdb_query_request* request,
                                           towdb_query_search* search, towdb_query_result* at_value);
 TOWDB_QUERY_API int towdb_query_min_length(towdb_query_db* db, const towdb_query_request* request,
