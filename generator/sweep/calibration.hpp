@@ -1,5 +1,5 @@
 // The calibration sweep: every case of the thesis's Appendix C calibration
-// table (/work/shared/validation/appendix_c_calibration.csv, columns
+// table (tests/data/validation/appendix_c_calibration.csv, columns
 // case,tug,tow,speed_kt,wind_kt,heading_deg,length_ft,line,mean_lbf,days,dyn_kips)
 // as one [[case]] of a sweep file, with its given mean tension and days.
 // The thesis's dynamic tension (dyn_kips) is kept as a comment next to each

@@ -1,5 +1,5 @@
 // Validation against the thesis database: every calibration case of the
-// thesis's Appendix C (Desroches 1997; /work/shared/validation/
+// thesis's Appendix C (Desroches 1997; tests/data/validation/
 // appendix_c_calibration.csv) is run through the whole chain
 // (simulation::run_case) with its given inputs, and our dynamic tension at
 // F = 0.999 per day is compared with the thesis's.

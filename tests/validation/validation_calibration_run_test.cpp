@@ -31,8 +31,9 @@ std::string env_or(const char* name, const std::string& fallback) {
 }
 
 TEST(ValidationCalibrationRun, EveryThesisCaseHasAnOutcomeAndTheReportIsWritten) {
-  const auto table = shared_dir() / "validation" / "appendix_c_calibration.csv";
-  if (shared_dir().empty() || !std::filesystem::exists(table)) GTEST_SKIP() << "no " << table;
+  // The repository's copy of the thesis table (tests/data/validation/README.md).
+  const auto table = source_dir() / "tests" / "data" / "validation" / "appendix_c_calibration.csv";
+  ASSERT_TRUE(std::filesystem::exists(table)) << table;
   std::size_t rows = 0;
   {
     std::ifstream in(table);
