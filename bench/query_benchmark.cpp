@@ -7,6 +7,7 @@
 // builds can be compared for identical results (after SQLite's speedtest1).
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -24,8 +25,11 @@ struct Fixture {
   towdb_query_db* db = nullptr;
   std::vector<towdb_query_request> requests;
 
-  Fixture() {
-    path = std::filesystem::temp_directory_path() / ("towdb-bench-" + std::to_string(::getpid()) + ".towdb");
+  // relative: every case stores its node's calculated mean tension and the
+  // questions ask at the default, factor 1 of it (query.h EQ-QUERY-9).
+  explicit Fixture(bool relative) {
+    path = std::filesystem::temp_directory_path() /
+           ("towdb-bench-" + std::to_string(::getpid()) + (relative ? "-relative" : "") + ".towdb");
     std::filesystem::remove(path);
     towdb::test::GridSpec g;
     g.headings_deg = {0.0, 30.0, 60.0, 90.0, 120.0, 150.0, 180.0};
@@ -34,6 +38,7 @@ struct Fixture {
       return 40.0 * std::exp(0.05 * s + 0.03 * w - 0.0005 * l + 0.002 * h + 5e-6 * m);
     };
     g.beta_kips = [](double, double w, double, double, double m) { return 8.0 * std::exp(0.02 * w + 3e-6 * m); };
+    g.store_calculated = relative;
     towdb::test::write_synthetic_db(path, towdb::test::grid_cases(g));
     if (towdb_query_open(path.c_str(), TOWDB_QUERY_SPACE_AUTO, &db) != TOWDB_QUERY_OK) std::abort();
     std::mt19937 rng(2024);
@@ -48,7 +53,8 @@ struct Fixture {
       r.wind_kt = uw(rng);
       r.heading_deg = uh(rng);
       r.length_ft = ul(rng);
-      r.mean_tension_lbf = 63000.0;  // inside every node's stored mean tensions (60,900 to 66,700 lbf)
+      // Absolute: inside every node's stored mean tensions (60,900 to 66,700 lbf).
+      r.mean_tension_lbf = relative ? std::numeric_limits<double>::quiet_NaN() : 63000.0;
       requests.push_back(r);
     }
   }
@@ -58,13 +64,16 @@ struct Fixture {
   }
 };
 
-Fixture& fixture() {
-  static Fixture f;
-  return f;
+Fixture& fixture(bool relative) {
+  static Fixture absolute_fixture(false);
+  static Fixture relative_fixture(true);
+  return relative ? relative_fixture : absolute_fixture;
 }
 
+// state.range(0): 0 absolute mean-tension axis at a given tension, 1 the
+// relative axis (EQ-QUERY-9) at the default calculated tension.
 void BM_InterpolatedQuery(benchmark::State& state) {
-  Fixture& f = fixture();
+  Fixture& f = fixture(state.range(0) != 0);
   towdb_query_result res;
   std::size_t i = 0;
   double checksum = 0.0;
@@ -77,10 +86,10 @@ void BM_InterpolatedQuery(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
   state.counters["checksum"] = checksum / static_cast<double>(state.iterations());
 }
-BENCHMARK(BM_InterpolatedQuery);
+BENCHMARK(BM_InterpolatedQuery)->Arg(0)->Arg(1);
 
 void BM_OpenDatabase(benchmark::State& state) {
-  Fixture& f = fixture();
+  Fixture& f = fixture(false);
   for (auto _ : state) {
     towdb_query_db* db = nullptr;
     if (towdb_query_open(f.path.c_str(), TOWDB_QUERY_SPACE_AUTO, &db) != TOWDB_QUERY_OK) state.SkipWithError("open");
