@@ -249,9 +249,9 @@ std::string csv_row(const QueryRequest& rq, const QueryResult* r, const std::str
 struct MeanDefault {
   bool calculated = false;
   // The database stores T_calc at its nodes (query.h EQ-QUERY-9): the library's
-  // default, interpolated from them, is used (no strip theory at query time).
-  bool at_nodes = false;
-  double at_nodes_lbf = std::numeric_limits<double>::quiet_NaN();
+  // default, interpolated from them, is used (no strip theory at query time),
+  // and this is already the answer at it.
+  std::optional<QueryResult> at_nodes;
   std::optional<DatabaseBasis> basis;
   CalculatedMeanTension tension;
   std::string reason;  // why the library default is used instead (when !calculated)
@@ -297,7 +297,7 @@ ordered_json mean_default_json(const MeanDefault& d) {
   ordered_json j;
   if (d.at_nodes) {
     j["method"] = "calculated_at_nodes";
-    j["calculated_mean_tension_lbf"] = d.at_nodes_lbf;
+    j["calculated_mean_tension_lbf"] = d.at_nodes->values.mean_tension_lbf;
     return j;
   }
   if (!d.calculated) {
@@ -316,7 +316,7 @@ void print_mean_default(const MeanDefault& d) {
   if (d.at_nodes) {
     std::cout << "\nmean tension: not given; the calculated mean tension of this speed and wind on the database's "
                  "basis, interpolated from the values stored at the grid nodes: "
-              << fmt_grouped(d.at_nodes_lbf) << " lbf (`towdb mean-tension` gives its breakdown)\n";
+              << fmt_grouped(d.at_nodes->values.mean_tension_lbf) << " lbf (`towdb mean-tension` gives its breakdown)\n";
     return;
   }
   if (!d.calculated) {
@@ -344,16 +344,16 @@ void print_mean_default(const MeanDefault& d) {
 
 // Fills a missing mean tension; returns what was done (nullopt: it was given).
 // Where the database stores T_calc at its nodes the library's own default is
-// used (the request keeps NaN); a question the library refuses without a mean
+// used (the request keeps NaN) and its answer is kept in at_nodes, so the
+// question is not asked twice; a question the library refuses without a mean
 // tension is refused with a mean tension too, so its error is passed on.
 std::optional<MeanDefault> apply_mean_default(MeanDefaults& defaults, const QueryArgs& a, QueryRequest* rq,
                                               query::Database& db) {
   if (!std::isnan(a.mean_tension_lbf)) return std::nullopt;
-  const QueryResult probe = db.query(*rq);
+  QueryResult probe = db.query(*rq);
   if (std::isfinite(probe.values.mean_tension_factor)) {
     MeanDefault d;
-    d.at_nodes = true;
-    d.at_nodes_lbf = probe.values.mean_tension_lbf;
+    d.at_nodes = std::move(probe);
     return d;
   }
   MeanDefault d = defaults.for_question(a);
@@ -508,7 +508,7 @@ int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean
       } catch (const InputError& e) {
         throw QueryError(TOWDB_QUERY_INPUT, e.what());  // reported on its row like any bad row
       }
-      const QueryResult r = db.query(rq);
+      const QueryResult r = mean_default && mean_default->at_nodes ? *mean_default->at_nodes : db.query(rq);
       if (defaults.json) {
         all.push_back(result_json(rq, r, a.brake));
         if (mean_default) all.back()["mean_tension_default"] = mean_default_json(*mean_default);
@@ -589,7 +589,7 @@ int run_query(const Context& ctx, const QueryArgs& a) {
     const std::optional<MeanDefault> mean_default = apply_mean_default(mean_defaults, a, &rq, db);
     QueryResult r;
     try {
-      r = db.query(rq);
+      r = mean_default && mean_default->at_nodes ? *mean_default->at_nodes : db.query(rq);
     } catch (const QueryError& e) {
       // Name the mean tension the user did not give, and where it came from.
       if (!mean_default || !mean_default->calculated || !e.is_input()) throw;

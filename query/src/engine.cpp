@@ -497,20 +497,43 @@ constexpr double kChordSagFloor = 0.5;
 // estimate t (1 - t) |f(x_i1) - f(x_i0)| (a chord that sags by a quarter of
 // the rise at mid-cell: the curvature of f ~ x^2 over the cell). In log
 // space f = ln x and the estimate is scaled by x (dx = x d ln x).
+// EQ-QUERY-7 along one axis of stored values x(0..n-1), the query in the
+// cell [i0, i1] at fraction t; f(i) is the interpolated quantity with this
+// axis pinned to index i (NaN: not available). The chord estimate
+// t (1 - t) |f(i1) - f(i0)| counts in full with two values and with weight
+// chord_floor otherwise; the curvature estimate of each side that has a third
+// value can only raise it.
+template <class X, class F>
+double axis_error(int n, int i0, int i1, double t, double chord_floor, const X& x, const F& f) {
+  const double f0 = f(i0), f1 = f(i1);
+  if (!(std::isfinite(f0) && std::isfinite(f1))) return 0.0;  // ln of a non-positive corner value
+  const double tt = std::abs(t * (1.0 - t)), h = x(i1) - x(i0);
+  double e = (n == 2 ? 1.0 : chord_floor) * tt * std::abs(f1 - f0);
+  if (i0 - 1 >= 0) {
+    const double fl = f(i0 - 1);
+    if (std::isfinite(fl)) {
+      e = std::max(e, tt * h * h * std::abs(divided_difference2(x(i0 - 1), fl, x(i0), f0, x(i1), f1)));
+    }
+  }
+  if (i1 + 1 < n) {
+    const double fr = f(i1 + 1);
+    if (std::isfinite(fr)) {
+      e = std::max(e, tt * h * h * std::abs(divided_difference2(x(i0), f0, x(i1), f1, x(i1 + 1), fr)));
+    }
+  }
+  return e;
+}
+
 double interpolation_error_kips(const Group& g, const Brackets& br, const Evaluation& ev, const MeanTarget& target,
                                 Space s, bool ex, double c, double answer_kips) {
   const bool log_space = s == Space::kLog && answer_kips > 0.0;
   auto g_of = [&](double x) { return log_space ? std::log(x) : x; };
   const double scale = log_space ? answer_kips : 1.0;
-  auto along = [](double t, double h, double f0, double f1, double dd2) {
-    return std::isnan(dd2) ? std::abs(t * (1.0 - t)) * std::abs(f1 - f0) : std::abs(t * (1.0 - t)) * h * h * std::abs(dd2);
-  };
   double err = 0.0;
   for (int j = 0; j < ev.active_count; ++j) {
     const int a = ev.active[j];
     const auto& ax = g.axis[a];
-    const int i0 = br[a].i0, i1 = br[a].i1, n = static_cast<int>(ax.size());
-    // f at stored index i of this axis, the other axes as in the query (NaN: not available).
+    // The whole cell re-evaluated with this axis pinned to stored index i.
     auto f_at = [&](int i) {
       Brackets pinned = br;
       pinned[a] = Bracket{i, i, 0.0, false};
@@ -524,33 +547,19 @@ double interpolation_error_kips(const Group& g, const Brackets& br, const Evalua
         return kNaN;
       }
     };
-    const double f0 = f_at(i0), f1 = f_at(i1);
-    if (!(std::isfinite(f0) && std::isfinite(f1))) continue;  // ln of a non-positive corner value
-    const double h = ax[i1] - ax[i0], t = br[a].t;
-    double e_axis = n == 2 ? along(t, h, f0, f1, kNaN) : kChordSagFloor * along(t, h, f0, f1, kNaN);
-    if (i0 - 1 >= 0) {
-      const double fl = f_at(i0 - 1);
-      if (std::isfinite(fl)) e_axis = std::max(e_axis, along(t, h, f0, f1, divided_difference2(ax[i0 - 1], fl, ax[i0], f0, ax[i1], f1)));
-    }
-    if (i1 + 1 < n) {
-      const double fr = f_at(i1 + 1);
-      if (std::isfinite(fr)) e_axis = std::max(e_axis, along(t, h, f0, f1, divided_difference2(ax[i0], f0, ax[i1], f1, ax[i1 + 1], fr)));
-    }
-    err += scale * e_axis;
+    err += scale * axis_error(static_cast<int>(ax.size()), br[a].i0, br[a].i1, br[a].t, kChordSagFloor,
+                              [&](int i) { return ax[i]; }, f_at);
   }
+  // Each corner's own mean tensions (no chord floor: it was calibrated on the grid axes; docs/audit.md).
   const int n_corners = 1 << ev.active_count;
   for (int mask = 0; mask < n_corners; ++mask) {
     const Corner& cn = ev.corners[mask];
     if (cn.node < 0 || cn.value.p0 == cn.value.p1) continue;
     const auto& pts = g.nodes[cn.node].points;
-    const int p0 = cn.value.p0, p1 = cn.value.p1, n = static_cast<int>(pts.size());
-    auto xp = [&](int i) { return g_of(pts[i].u_kips + pts[i].beta_kips * c); };
-    auto m = [&](int i) { return pts[i].mean_lbf; };
-    const double h = m(p1) - m(p0), t = cn.value.t;
-    double e_mean = n == 2 ? along(t, h, xp(p0), xp(p1), kNaN) : 0.0;
-    if (p0 - 1 >= 0) e_mean = std::max(e_mean, along(t, h, xp(p0), xp(p1), divided_difference2(m(p0 - 1), xp(p0 - 1), m(p0), xp(p0), m(p1), xp(p1))));
-    if (p1 + 1 < n) e_mean = std::max(e_mean, along(t, h, xp(p0), xp(p1), divided_difference2(m(p0), xp(p0), m(p1), xp(p1), m(p1 + 1), xp(p1 + 1))));
-    if (std::isfinite(e_mean)) err += scale * std::abs(cn.weight) * e_mean;
+    const double e_mean = axis_error(
+        static_cast<int>(pts.size()), cn.value.p0, cn.value.p1, cn.value.t, 0.0,
+        [&](int i) { return pts[i].mean_lbf; }, [&](int i) { return g_of(pts[i].u_kips + pts[i].beta_kips * c); });
+    err += scale * std::abs(cn.weight) * e_mean;
   }
   return err;
 }

@@ -1,8 +1,9 @@
 # The repository stands alone (issue 19): no source, test, document or build
 # file names a build machine's absolute path. Run as
 #   cmake -DSOURCE_DIR=<repository> -P tests/repo/no_absolute_paths.cmake
-# Fails (and lists file:line) on a path under /work/, /home/, /Users/ or /root/
-# in any text file of the listed folders; test data and this file are exempt.
+# Fails (and lists file:line) on a path under a build machine's work, home,
+# Users or root folder (the pattern below) in any text file of the listed
+# folders; test data and this file are exempt.
 if(NOT SOURCE_DIR)
   message(FATAL_ERROR "no_absolute_paths: pass -DSOURCE_DIR=<repository root>")
 endif()
