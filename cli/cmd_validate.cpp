@@ -51,6 +51,9 @@ struct ValidateArgs {
   bool no_wave_damping = false;
   bool thesis_towline_fit = false;
   bool tow_drift_at_tow = false;
+  bool added_resistance_aft_of_beam = false;
+  bool signed_drift = false;
+  bool linear_non_surge_tension = false;
 };
 
 std::string read_text(const fs::path& path) {
@@ -116,8 +119,12 @@ std::string run_signature(const validation::RunOptions& o, const io::ShipCatalog
   os << "days_scale=" << fmt(o.days_scale) << " min_days=" << o.min_days
      << " response_frequencies=" << o.response_frequencies << " second_order_forces=" << o.second_order_forces
      << " wave_surge_damping=" << o.wave_surge_damping << " thesis_towline_fit=" << o.thesis_towline_fit
-     << " tow_drift_at_tow=" << o.tow_drift_at_tow
-     << " ships_sha256=" << io::sha256_hex(hashes) << "\n";
+     << " tow_drift_at_tow=" << o.tow_drift_at_tow;
+  // Written only when set, so that journals of the default chain stay valid.
+  if (o.added_resistance_aft_of_beam) os << " added_resistance_aft_of_beam=1";
+  if (o.signed_drift) os << " signed_drift=1";
+  if (o.linear_non_surge_tension) os << " linear_non_surge_tension=1";
+  os << " ships_sha256=" << io::sha256_hex(hashes) << "\n";
   return os.str();
 }
 
@@ -198,6 +205,9 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
   options.wave_surge_damping = !a.no_wave_damping;
   options.thesis_towline_fit = a.thesis_towline_fit;
   options.tow_drift_at_tow = a.tow_drift_at_tow;
+  options.added_resistance_aft_of_beam = a.added_resistance_aft_of_beam;
+  options.signed_drift = a.signed_drift;
+  options.linear_non_surge_tension = a.linear_non_surge_tension;
   options.validate();
 
   const fs::path out(a.out_dir);
@@ -292,6 +302,9 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
   if (a.no_wave_damping) note << " --no-wave-surge-damping";
   if (a.thesis_towline_fit) note << " --thesis-towline-fit";
   if (a.tow_drift_at_tow) note << " --tow-drift-at-tow";
+  if (a.added_resistance_aft_of_beam) note << " --added-resistance-aft-of-beam";
+  if (a.signed_drift) note << " --signed-drift";
+  if (a.linear_non_surge_tension) note << " --linear-non-surge-tension";
   note << "`. Simulated days per case = max(" << a.min_days << ", round(" << fmt(a.days_scale)
        << " x thesis days)); seed = thesis case number. Sum of case run times " << fmt(case_time_s, 0)
        << " s (this invocation: " << fmt(wall_s, 0) << " s wall, " << reused << " cases reused from the journal).";
@@ -355,6 +368,13 @@ void add_validate_command(CLI::App& app, Context& ctx) {
               "Diagnostic: fit the towline polynomial as the thesis did (a10 fitted, unweighted), not EQ-TOWLINE-16");
   c->add_flag("--tow-drift-at-tow", a->tow_drift_at_tow,
               "Diagnostic: the tow's slowly varying force from the wave envelope at the tow (not the thesis's shared one)");
+  c->add_flag("--added-resistance-aft-of-beam", a->added_resistance_aft_of_beam,
+              "Diagnostic: Gerritsma-Beukelman added resistance aft of beam too (EQ-AR-4 sets it to 0 there)");
+  c->add_flag("--signed-drift", a->signed_drift,
+              "Diagnostic: keep the sign of the drift coefficient in Newman's force (a thrust where R_aw < 0)");
+  c->add_flag("--linear-non-surge-tension", a->linear_non_surge_tension,
+              "Diagnostic: the non-surge extension as a linear tension added to the polynomial's surge tension "
+              "(EQ-SURGE-6)");
   c->callback([&ctx, a] { ctx.action = [&ctx, a] { return run_validate(ctx, *a); }; });
 }
 

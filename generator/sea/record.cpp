@@ -262,8 +262,11 @@ struct DaySynthesizer::Impl {
   std::vector<unsigned char> negative;
   // 0.5 a_j H_k(w_j), conjugated when w_e < 0 (EQ-SEA-8).
   std::vector<std::vector<std::complex<double>>> linear_gain;
-  // 0.5 a_j sqrt(D_k(w_j)) exp(i theta_kj), conjugated when w_e < 0 (EQ-SEA-9).
+  // 0.5 a_j sqrt(max(D_k(w_j), 0)) exp(i theta_kj), conjugated when w_e < 0
+  // (EQ-SEA-9), and the same from max(-D_k, 0) for the components where D_k is
+  // negative (empty when none is: then the series is D >= 0's bit for bit).
   std::vector<std::vector<std::complex<double>>> drift_gain;
+  std::vector<std::vector<std::complex<double>>> drift_gain_negative;
   std::vector<double> drift_mean;
   // Bins [first, first + count) of the c2r input that no component writes:
   // they are zeroed before every transform (c2r overwrites its input). When
@@ -298,12 +301,14 @@ struct DaySynthesizer::Workspace::Buffers {
   std::size_t n_linear = 0;
   fftw_complex* spectrum = nullptr;
   double* scratch = nullptr;
+  double* scratch_negative = nullptr;  // only when a drift series has D < 0 somewhere
   std::vector<double*> outputs;  // linear series, then drift series
   std::vector<std::complex<double>> phasors;
 
   ~Buffers() {
     fftw_free(spectrum);
     fftw_free(scratch);
+    fftw_free(scratch_negative);
     for (double* p : outputs) fftw_free(p);
   }
 };
@@ -385,12 +390,12 @@ DaySynthesizer::DaySynthesizer(RecordPlan plan,
                     static_cast<double>(theta->size()),
                     "must have one entry per plan component (" + std::to_string(nc) + ")");
     }
-    std::vector<std::complex<double>> gain(nc);
+    std::vector<std::complex<double>> gain(nc), gain_negative;
     double mean = 0.0;
     for (std::size_t j = 0; j < nc; ++j) {
-      if (!(std::isfinite(d[j]) && d[j] >= 0.0)) {
+      if (!std::isfinite(d[j])) {
         require_input(false, "drift_coefficient[" + std::to_string(k) + "][" + std::to_string(j) + "]", d[j],
-                      "must be finite and >= 0 (Newman's approximation needs D >= 0)");
+                      "must be finite");
       }
       const double a = comps[j].amplitude_m;
       const double th = theta != nullptr ? (*theta)[j] : 0.0;
@@ -400,10 +405,16 @@ DaySynthesizer::DaySynthesizer(RecordPlan plan,
       }
       // The phase enters like phi_j: conjugated with it for w_e < 0 (EQ-SEA-8).
       const std::complex<double> lag(std::cos(th), comps[j].negative_encounter ? -std::sin(th) : std::sin(th));
-      gain[j] = 0.5 * a * std::sqrt(d[j]) * lag;
+      if (d[j] >= 0.0) {
+        gain[j] = 0.5 * a * std::sqrt(d[j]) * lag;
+      } else {
+        if (gain_negative.empty()) gain_negative.resize(nc);
+        gain_negative[j] = 0.5 * a * std::sqrt(-d[j]) * lag;
+      }
       mean += a * a * d[j];
     }
     im.drift_gain.push_back(std::move(gain));
+    im.drift_gain_negative.push_back(std::move(gain_negative));
     im.drift_mean.push_back(mean);
   }
   // One c2r plan for every series, made once and never from timing
@@ -469,11 +480,14 @@ DaySynthesizer::Workspace DaySynthesizer::make_workspace() const {
   const std::size_t n = static_cast<std::size_t>(im.n);
   buf->spectrum = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * static_cast<std::size_t>(im.n_spec)));
   buf->scratch = static_cast<double*>(fftw_malloc(sizeof(double) * n));
+  const bool any_negative = std::any_of(im.drift_gain_negative.begin(), im.drift_gain_negative.end(),
+                                        [](const auto& g) { return !g.empty(); });
+  if (any_negative) buf->scratch_negative = static_cast<double*>(fftw_malloc(sizeof(double) * n));
   const std::size_t series = im.linear_gain.size() + im.drift_gain.size();
   for (std::size_t k = 0; k < series; ++k) {
     buf->outputs.push_back(static_cast<double*>(fftw_malloc(sizeof(double) * n)));
   }
-  if (buf->spectrum == nullptr || buf->scratch == nullptr ||
+  if (buf->spectrum == nullptr || buf->scratch == nullptr || (any_negative && buf->scratch_negative == nullptr) ||
       std::find(buf->outputs.begin(), buf->outputs.end(), nullptr) != buf->outputs.end()) {
     throw NumericalError("DaySynthesizer workspace: fftw_malloc failed for " + std::to_string(n) +
                          " samples");
@@ -511,12 +525,11 @@ void DaySynthesizer::synthesize(std::uint64_t seed, std::uint64_t day, Workspace
   //   p = Re E = sum c cos(w_e t + phi),  q = Im E = sum c sin(w_e t + phi),
   // each a c2r of half-amplitudes (b/2) e^{i phi} and -i (b/2) e^{i phi}
   // (conjugated, and -i -> +i, for w_e < 0); f2 = mean - (p^2 + q^2).
-  for (std::size_t k = 0; k < im.drift_gain.size(); ++k) {
-    const std::complex<double>* gain = im.drift_gain[k].data();
-    double* p = buf.outputs[buf.n_linear + k];
+  // |E|^2 of the envelope with half-amplitude gains `gain`, into `out`.
+  const auto envelope_power = [&](const std::complex<double>* gain, double* out) {
     im.clear_input(buf.spectrum);
     for (std::size_t j = 0; j < nc; ++j) spec[im.bins[j]] = mul(gain[j], buf.phasors[j]);
-    fftw_execute_dft_c2r(im.c2r, buf.spectrum, p);
+    fftw_execute_dft_c2r(im.c2r, buf.spectrum, out);
     im.clear_input(buf.spectrum);
     for (std::size_t j = 0; j < nc; ++j) {
       const std::complex<double> v = mul(gain[j], buf.phasors[j]);
@@ -525,9 +538,22 @@ void DaySynthesizer::synthesize(std::uint64_t seed, std::uint64_t day, Workspace
                                              : std::complex<double>(v.imag(), -v.real());
     }
     fftw_execute_dft_c2r(im.c2r, buf.spectrum, buf.scratch);
-    const double mean = im.drift_mean[k];
     const double* q = buf.scratch;
-    for (std::size_t i = 0; i < n; ++i) p[i] = mean - (p[i] * p[i] + q[i] * q[i]);
+    for (std::size_t i = 0; i < n; ++i) out[i] = out[i] * out[i] + q[i] * q[i];
+  };
+  for (std::size_t k = 0; k < im.drift_gain.size(); ++k) {
+    double* f2 = buf.outputs[buf.n_linear + k];
+    envelope_power(im.drift_gain[k].data(), f2);
+    const double mean = im.drift_mean[k];
+    if (im.drift_gain_negative[k].empty()) {
+      for (std::size_t i = 0; i < n; ++i) f2[i] = mean - f2[i];
+    } else {
+      // Components with D < 0 (a thrust) give a second envelope whose power
+      // adds with the opposite sign; cross terms between the two signs are
+      // left out (sqrt(D_j D_l) is not real there).
+      envelope_power(im.drift_gain_negative[k].data(), buf.scratch_negative);
+      for (std::size_t i = 0; i < n; ++i) f2[i] = mean - f2[i] + buf.scratch_negative[i];
+    }
   }
 }
 

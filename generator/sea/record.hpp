@@ -105,7 +105,7 @@ class DaySynthesizer {
  public:
   // linear_transfer[k][j] = H_k(w_j) of output series k for component j
   //   (output unit per metre of wave amplitude; e.g. N/m for a surge force).
-  // drift_coefficient[k][j] = D_k(w_j) >= 0 (output unit per m^2 of amplitude
+  // drift_coefficient[k][j] = D_k(w_j), finite, of either sign (output unit per m^2 of amplitude
   //   squared, e.g. R_aw/zeta_a^2 in N/m^2) of second-order series k (EQ-SEA-9).
   // drift_phase_rad[k][j] (optional: empty = all 0) = theta_k(w_j), the phase
   //   of component j at the point where second-order series k acts, relative

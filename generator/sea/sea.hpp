@@ -82,6 +82,12 @@
 //           sum_j a_j^2 D_j = 2 int D S dw is the mean added resistance (thesis
 //           eq. 2.2), already inside the mean tension. E = p + i q is built from
 //           two c2r transforms (p = Re E, q = Im E): cheaper than one c2c here.
+//           Where D changes sign (added resistance that is a thrust in part of
+//           following seas, EQ-AR-4 when kept aft of beam), the components with
+//           D < 0 form a second envelope E- from sqrt(-D) and
+//             f2(t) = -|E+(t)|^2 + |E-(t)|^2 + sum_j a_j^2 D(w_j);
+//           cross terms between the two signs are left out (sqrt(D_j D_l) is
+//           not real). With D >= 0 everywhere E- is empty and f2 is unchanged.
 //           A series that acts at a point other than the reference origin
 //           (the tow, G astern of the tug) uses the envelope there:
 //             E(t)  = sum_j a_j sqrt(D(w_j)) exp(i (w_e,j t + phi_j + theta_j)),

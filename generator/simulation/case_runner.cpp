@@ -367,8 +367,8 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
       g.xi_q.push_back(ci.xi_ns_q);
       // Newman's approximation needs D >= 0; a negative added resistance
       // (small, following seas) gives no slowly varying force here.
-      g.drift_tug.push_back(std::max(0.0, ci.drift_tug_n_per_m2));
-      g.drift_tow.push_back(std::max(0.0, ci.drift_tow_n_per_m2));
+      g.drift_tug.push_back(options.signed_drift ? ci.drift_tug_n_per_m2 : std::max(0.0, ci.drift_tug_n_per_m2));
+      g.drift_tow.push_back(options.signed_drift ? ci.drift_tow_n_per_m2 : std::max(0.0, ci.drift_tow_n_per_m2));
     }
   }
 
@@ -415,6 +415,11 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
   m->surge.tow_damping_n_s_m = dampings.tow_n_s_m;
   m->surge.cos_alpha_tug = std::cos(r.towline.tug_angle_rad);
   m->surge.cos_alpha_tow = std::cos(r.towline.tow_angle_rad);
+  if (options.linear_non_surge_tension) {  // EQ-SURGE-6 with the 12-DOF model's line
+    m->surge.linear_non_surge_tension = true;
+    m->surge.non_surge_stiffness_n_m = line.stiffness_n_m;
+    m->surge.non_surge_damping_n_s_m = line.damping_n_s_m;
+  }
   m->surge.validate();
   r.tug_mass_kg = m->surge.tug_mass_kg;
   r.tow_mass_kg = m->surge.tow_mass_kg;

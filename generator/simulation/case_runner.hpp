@@ -88,6 +88,15 @@ struct CaseOptions {
   // Physically the groups reach the tow later, but with the lag the head-sea
   // tensions move further from the thesis (docs/validation.md, "Issue 17").
   bool tow_drift_at_tow = false;
+  // Diagnostic (issue 17), off: keep the sign of the drift coefficient
+  // D = R_aw / zeta^2 in Newman's construction (EQ-SEA-9 with D < 0: a
+  // slowly varying thrust) instead of D = max(0, R_aw / zeta^2). Acts aft of
+  // beam only with response.added_resistance_aft_of_beam (EQ-AR-4).
+  bool signed_drift = false;
+  // Diagnostic (issue 17), off: EQ-SURGE-6, the non-surge extension as a
+  // linear tension (a10, a01 of the 12-DOF model's line) added to the
+  // polynomial of the surge extension, instead of inside its argument.
+  bool linear_non_surge_tension = false;
   seakeeping::ResponseOptions response;  // strip theory
   // Absolute-frequency grid of the transfer functions: uniform on [lo, hi],
   // independent of the sea so that responses are shared between cases

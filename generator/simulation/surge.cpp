@@ -11,6 +11,8 @@ void SurgeParameters::validate() const {
   require_in_range("surge: tow_damping_n_s_m", tow_damping_n_s_m, 0.0, 1e12);
   require_in_range("surge: cos_alpha_tug", cos_alpha_tug, 0.0, 1.0);
   require_in_range("surge: cos_alpha_tow", cos_alpha_tow, 0.0, 1.0);
+  require_in_range("surge: non_surge_stiffness_n_m", non_surge_stiffness_n_m, 0.0, 1e12);
+  require_in_range("surge: non_surge_damping_n_s_m", non_surge_damping_n_s_m, 0.0, 1e12);
 }
 
 void DayForcing::validate() const {

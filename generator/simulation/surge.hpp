@@ -25,6 +25,10 @@
 //               that at h = 0.25 s, 0.11 % with this rule; in beam seas with
 //               encounter frequencies up to the 3 rad/s cutoff (1,000 ft
 //               wire, 30 kt, 6 kt) 2.6 %, and 1.1 % with it.
+//   EQ-SURGE-6  (diagnostic, SurgeParameters::linear_non_surge_tension)
+//               tau = max(-T, P(xi_s, xi_s') + k_ns xi_ns + c_ns xi_ns'),
+//               xi_s the surge part of EQ-SURGE-3: the non-surge tension
+//               linear, added to the polynomial's surge tension.
 // M_k = mass + surge added mass, B_k = linear surge damping (hull + propeller +
 // wave-induced), f_k = first- plus second-order wave surge force, xi_ns the
 // non-surge extension (heave, pitch, ... projected on the line tangents).
@@ -262,6 +266,15 @@ struct SurgeParameters {
   double tow_damping_n_s_m = 0.0;
   double cos_alpha_tug = 1.0;        // cos of the line angle at the tug's tow point
   double cos_alpha_tow = 1.0;
+  // EQ-SURGE-6 (diagnostic, off): the non-surge extension enters as a linear
+  // tension added to the polynomial of the surge extension instead of inside
+  // the polynomial's argument (thesis 3.4's reading "solve the non surge
+  // tensions ..., then ... the surge components"):
+  //   tau = max(-T, P(xi_s, xi_s') + k_ns xi_ns + c_ns xi_ns'),
+  //   xi_s = x_1 cos(alpha_1) - x_7 cos(alpha_2).
+  bool linear_non_surge_tension = false;
+  double non_surge_stiffness_n_m = 0.0;   // k_ns (the 12-DOF model's a10)
+  double non_surge_damping_n_s_m = 0.0;   // c_ns (its a01)
 
   void validate() const;
 };
@@ -545,12 +558,33 @@ struct SurgeKernel {
     xi_dot = y.v1 * p.cos_alpha_tug - y.v7 * p.cos_alpha_tow + g.xi_ns_dot;
   }
 
+  // The extension the polynomial sees: the whole of EQ-SURGE-3, or its surge
+  // part only under EQ-SURGE-6.
+  template <typename T>
+  TOWDB_SURGE_INLINE void law_extension(const StateOf<T>& y, const ForcingOf<T>& g, T& xi, T& xi_dot) const {
+    if (!p.linear_non_surge_tension) {
+      extension(y, g, xi, xi_dot);
+    } else {
+      xi = y.x1 * p.cos_alpha_tug - y.x7 * p.cos_alpha_tow;
+      xi_dot = y.v1 * p.cos_alpha_tug - y.v7 * p.cos_alpha_tow;
+    }
+  }
+
+  // The dynamic tension at state y and forcing g (EQ-SURGE-4, or EQ-SURGE-6).
+  template <typename T>
+  TOWDB_SURGE_INLINE T tension(const StateOf<T>& y, const ForcingOf<T>& g) const {
+    T xi, xi_dot;
+    law_extension(y, g, xi, xi_dot);
+    const T tau = law.tension(xi, xi_dot);
+    if (!p.linear_non_surge_tension) return tau;
+    const T ns = p.non_surge_stiffness_n_m * g.xi_ns + p.non_surge_damping_n_s_m * g.xi_ns_dot;
+    return lanes::max(tau + ns, lanes::splat<T>(-mean));
+  }
+
   // Derivative of the state; also returns the tension it used.
   template <typename T>
   TOWDB_SURGE_INLINE StateOf<T> derivative(const StateOf<T>& y0, const ForcingOf<T>& g, T* tau_out) const {
-    T xi, xi_dot;
-    extension(y0, g, xi, xi_dot);
-    const T tau = law.tension(xi, xi_dot);
+    const T tau = tension(y0, g);
     *tau_out = tau;
     return StateOf<T>{y0.v1, (-tau * p.cos_alpha_tug + g.f1 - p.tug_damping_n_s_m * y0.v1) / p.tug_mass_kg, y0.v7,
                       (tau * p.cos_alpha_tow + g.f7 - p.tow_damping_n_s_m * y0.v7) / p.tow_mass_kg};
@@ -561,7 +595,7 @@ struct SurgeKernel {
   template <typename T>
   TOWDB_SURGE_INLINE T rate(const StateOf<T>& y, const ForcingOf<T>& g0) const {
     T xi, xi_dot;
-    extension(y, g0, xi, xi_dot);
+    law_extension(y, g0, xi, xi_dot);
     const T zero = lanes::splat<T>(0.0);
     const T k_line = lanes::max(zero, law.stiffness(xi, xi_dot)) * inv_mass_line;
     const T c_loc = lanes::max(zero, law.damping(xi, xi_dot));
@@ -626,9 +660,7 @@ struct SurgeKernel {
     const double e = 0.125 * h;
     const StateOf<T> ym{0.5 * (y0.x1 + y1.x1) + e * (f0.x1 - f1.x1), 0.5 * (y0.v1 + y1.v1) + e * (f0.v1 - f1.v1),
                         0.5 * (y0.x7 + y1.x7) + e * (f0.x7 - f1.x7), 0.5 * (y0.v7 + y1.v7) + e * (f0.v7 - f1.v7)};
-    T xi, xi_dot;
-    extension(ym, gm, xi, xi_dot);
-    const T tau_m = law.tension(xi, xi_dot);
+    const T tau_m = tension(ym, gm);
     // p(s) = a s^2 + b s + tau0 through (0, tau0), (1/2, tau_m), (1, tau1);
     // an interior maximum when a < 0 and 0 < -b / 2a < 1.
     const T a = 2.0 * (tau0 + tau1) - 4.0 * tau_m;

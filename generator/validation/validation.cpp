@@ -147,6 +147,9 @@ simulation::CaseOptions case_options(const RunOptions& options) {
   o.second_order_forces = options.second_order_forces;
   o.wave_surge_damping = options.wave_surge_damping;
   o.tow_drift_at_tow = options.tow_drift_at_tow;
+  o.response.added_resistance_aft_of_beam = options.added_resistance_aft_of_beam;
+  o.signed_drift = options.signed_drift;
+  o.linear_non_surge_tension = options.linear_non_surge_tension;
   if (options.thesis_towline_fit) {
     o.towline.hold_static_stiffness = false;
     o.towline.max_run_weight_exponent = 0.0;

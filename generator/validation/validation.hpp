@@ -73,6 +73,12 @@ struct RunOptions {
   // The tow's slowly varying force from the envelope at the tow
   // (CaseOptions::tow_drift_at_tow) instead of the thesis's shared envelope.
   bool tow_drift_at_tow = false;
+  // Diagnostics (issue 17): Gerritsma-Beukelman aft of beam (EQ-AR-4) and the
+  // drift coefficient's sign kept in Newman's force (CaseOptions::signed_drift).
+  bool added_resistance_aft_of_beam = false;
+  bool signed_drift = false;
+  // Diagnostic (issue 17): EQ-SURGE-6 (CaseOptions::linear_non_surge_tension).
+  bool linear_non_surge_tension = false;
   void validate() const;
 };
 

@@ -65,20 +65,22 @@ double direct_linear(const RecordPlan& plan, const std::vector<Complex>& h, cons
 }
 
 // EQ-SEA-9 by direct summation (theta: the series' phase of each component,
-// empty = 0; it enters like phi).
+// empty = 0; it enters like phi). Components with D < 0 form their own
+// envelope E-, whose power enters with the opposite sign:
+// f2 = sum a^2 D - |E+|^2 + |E-|^2.
 double direct_drift(const RecordPlan& plan, const std::vector<double>& d, const std::vector<double>& phase, double t,
                     const std::vector<double>& theta = {}) {
-  Complex e = 0.0;
+  Complex e_pos = 0.0, e_neg = 0.0;
   double mean = 0.0;
   const auto& comps = plan.components();
   for (std::size_t j = 0; j < comps.size(); ++j) {
     const double sign = comps[j].negative_encounter ? -1.0 : 1.0;
     const double w = sign * static_cast<double>(comps[j].bin) * plan.bin_omega_rad_s();
-    const double b = comps[j].amplitude_m * std::sqrt(d[j]);
-    e += b * std::polar(1.0, w * t + phase[j] + (theta.empty() ? 0.0 : theta[j]));
-    mean += b * b;
+    const double b = comps[j].amplitude_m * std::sqrt(std::abs(d[j]));
+    (d[j] >= 0.0 ? e_pos : e_neg) += b * std::polar(1.0, w * t + phase[j] + (theta.empty() ? 0.0 : theta[j]));
+    mean += comps[j].amplitude_m * comps[j].amplitude_m * d[j];
   }
-  return mean - std::norm(e);
+  return mean - std::norm(e_pos) + std::norm(e_neg);
 }
 
 TEST(SeaRecord, VarianceEqualsM0AtEveryHeadingAndSpeed) {
@@ -189,6 +191,42 @@ TEST(SeaRecord, FftMatchesDirectSummationIncludingNegativeEncounter) {
     EXPECT_ABS_CLOSE(ws.drift(0)[static_cast<std::size_t>(n)], direct_drift(plan, d, phase, t),
                      kDirectSumRelTol * drift_scale);
   }
+}
+
+TEST(SeaRecord, SignedDriftCoefficientMatchesDirectSummation) {
+  // EVIDENCE-OF: EQ-SEA-9
+  // A drift coefficient that changes sign along the spectrum (an added
+  // resistance that is a thrust in part of following seas): the components
+  // with D < 0 form a second envelope whose power adds with the opposite sign.
+  // FFT = direct sum to rounding, the mean is sum a^2 D, and the force rises
+  // above that mean where the thrust groups dominate (impossible with D >= 0).
+  constexpr double kDirectSumRelTol = 1e-9;
+  RecordOptions opt;
+  opt.duration_s = 900.0;
+  const Spectrum js = Spectrum::jonswap(3.0, 9.0, 3.3);
+  const RecordPlan plan(single_system(js, units::deg_to_rad(20.0)), units::kt_to_m_s(9.0), opt);
+  std::vector<double> d(plan.components().size());
+  RandomStream r(11, 3);
+  for (double& x : d) x = 1.0e3 * (r.uniform01() - 0.5);
+  ASSERT_TRUE(std::any_of(d.begin(), d.end(), [](double x) { return x < 0.0; }));
+  DaySynthesizer synth(plan, {}, {d});
+  auto ws = synth.make_workspace();
+  synth.synthesize(2024, 7, ws);
+  std::vector<double> phase(plan.components().size());
+  draw_phases(2024, 7, phase);
+  double expected_mean = 0.0, abs_scale = 0.0;
+  for (std::size_t j = 0; j < d.size(); ++j) {
+    const double a = plan.components()[j].amplitude_m;
+    expected_mean += a * a * d[j];
+    abs_scale += a * a * std::abs(d[j]);
+  }
+  EXPECT_REL_CLOSE(synth.drift_mean(0), expected_mean, 1e-12);
+  for (std::int64_t n = 0; n < plan.samples(); n += plan.samples() / 23) {
+    const double t = static_cast<double>(n) * plan.time_step_s();
+    EXPECT_ABS_CLOSE(ws.drift(0)[static_cast<std::size_t>(n)], direct_drift(plan, d, phase, t),
+                     kDirectSumRelTol * abs_scale);
+  }
+  EXPECT_GT(*std::max_element(ws.drift(0).begin(), ws.drift(0).end()), synth.drift_mean(0) + 0.1 * abs_scale);
 }
 
 TEST(SeaRecord, DriftPhaseMatchesDirectSummationIncludingNegativeEncounter) {

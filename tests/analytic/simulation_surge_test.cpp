@@ -10,6 +10,9 @@
 //            has it).
 //   surge-5  a tension peak halfway between two steps (EQ-SURGE-5): the
 //            samples read it low by 1 - cos(w h / 2); the maximum does not.
+//   surge-6  EQ-SURGE-6 (non-surge tension linear, added): equals EQ-SURGE-4
+//            for a linear line; with immovable vessels on a cubic line the
+//            tension is k_ns xi_ns exactly, clamped at -T.
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -334,6 +337,63 @@ TEST(SurgeIntegrator, PeakBetweenStepsIsRead) {  // surge-5, EVIDENCE-OF: EQ-SUR
   EXPECT_LT(gated.min_tension_n - s.max_tension_n,
             -detail::kPeakGateFraction * (s.max_tension_n + 1.0e5));  // troughs skipped
   EXPECT_EQ(std::bit_cast<std::uint64_t>(gated.max_tension_n), std::bit_cast<std::uint64_t>(s.max_tension_n));
+}
+
+TEST(SurgeIntegrator, LinearNonSurgeTensionEqualsTheWholeExtensionOnALinearLine) {  // surge-6, EQ-SURGE-6
+  // For tau = k xi + c xi' the superposition P(xi_s) + k xi_ns + c xi_ns' is
+  // P(xi_s + xi_ns): the two readings agree to rounding on any forcing.
+  constexpr double kRoundingRelTol = 1e-9;
+  const LinearLine line{4.0e5, 2.0e4, 1.0e9};  // never slack
+  SurgeParameters p = tug_and_tow();
+  const double dt = 0.25;
+  const std::size_t n = 4000;
+  DayForcing f = harmonic_tug_force(1.0e5, 2.0 * kPi / 20.0, dt, n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) * dt, w = 2.0 * kPi / 8.0;
+    f.xi_ns_m[i] = 0.3 * std::sin(w * t);
+    f.xi_ns_dot_m_s[i] = 0.3 * w * std::cos(w * t);
+  }
+  IntegratorOptions o;
+  o.warmup_s = 3000.0;
+  std::vector<double> whole_trace, split_trace;
+  const DayStatistics whole = integrate_day(p, f, line, o, &whole_trace);
+  p.linear_non_surge_tension = true;
+  p.non_surge_stiffness_n_m = line.k;
+  p.non_surge_damping_n_s_m = line.c;
+  const DayStatistics split = integrate_day(p, f, line, o, &split_trace);
+  EXPECT_REL_CLOSE(split.max_tension_n, whole.max_tension_n, kRoundingRelTol);
+  EXPECT_REL_CLOSE(split.min_tension_n, whole.min_tension_n, kRoundingRelTol);
+  ASSERT_EQ(split_trace.size(), whole_trace.size());
+  for (std::size_t i = 0; i < n; i += 97) {
+    EXPECT_ABS_CLOSE(split_trace[i], whole_trace[i], kRoundingRelTol * whole.max_tension_n) << "sample " << i;
+  }
+}
+
+TEST(SurgeIntegrator, LinearNonSurgeTensionBypassesTheNonlinearLaw) {  // surge-6, EQ-SURGE-6
+  // Immovable vessels: xi_s = 0, so P(xi_s) = 0 and tau = max(-T, k_ns xi_ns)
+  // exactly, where EQ-SURGE-4 gives the cubic line's P(xi_ns).
+  SurgeParameters p = tug_and_tow();
+  p.tug_mass_kg = p.tow_mass_kg = 1e18;
+  const CubicLine line{1.0e6};  // P(1 m) = 3e5 + 1e6 = 1.3e6 N; slack at -2e5 N
+  const double dt = 0.05;
+  const std::size_t n = 20000;
+  DayForcing f = harmonic_tug_force(0.0, 1.0, dt, n);
+  const double w = 2.0 * kPi / 20.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) * dt;
+    f.xi_ns_m[i] = std::sin(w * t);
+    f.xi_ns_dot_m_s[i] = w * std::cos(w * t);
+  }
+  IntegratorOptions o;
+  o.warmup_s = 100.0;
+  const DayStatistics whole = integrate_day(p, f, line, o);
+  EXPECT_GT(whole.max_tension_n, 1.2e6);  // the cubic's stiffening (plus its 1e4 xi' term, out of phase)
+  p.linear_non_surge_tension = true;
+  p.non_surge_stiffness_n_m = 4.0e5;
+  const DayStatistics split = integrate_day(p, f, line, o);
+  EXPECT_REL_CLOSE(split.max_tension_n, 4.0e5, 1e-4);  // peaks read between steps (EQ-SURGE-5)
+  EXPECT_NEAR(split.min_tension_n, -2.0e5, 1e-6);       // clamped at -T
+  EXPECT_EQ(split.snatch_events, 50);                   // one slack-to-taut transition per 20 s cycle
 }
 
 }  // namespace
