@@ -35,6 +35,7 @@ struct MeanPoint {
   double ln_u = 0.0, ln_beta = 0.0;  // precomputed for log space (NaN when u <= 0)
   double slack = 0.0, ci_level = 0.0, ci_low_kips = 0.0, ci_high_kips = 0.0;
   double bs_lbf = 0.0;
+  double sag_ft = kNaN;  // static catenary's largest sag below the chord (NaN: no fit stored)
   bool above_bs = false;
   std::vector<int> cases;  // indices into Group::cases
 };
@@ -225,7 +226,7 @@ Bracket make_bracket(const std::vector<double>& axis, double q, bool extrapolate
 struct NodeValue {
   double g_u, g_beta;  // in the interpolation space
   double u, beta;      // kips
-  double slack, ci_level, ci_low, ci_high;
+  double slack, ci_level, ci_low, ci_high, sag_ft;
   double bs_min, bs_max, mean_lbf;
   bool above_bs, mean_extrapolated;
   int p0, p1;
@@ -285,6 +286,7 @@ NodeValue node_value(const Group& g, const Node& node, double mean_lbf, Space s,
     v.g_u = u_in(a, s);
     v.g_beta = beta_in(a, s);
     v.slack = a.slack;
+    v.sag_ft = a.sag_ft;
     v.ci_level = a.ci_level;
     v.ci_low = a.ci_low_kips;
     v.ci_high = a.ci_high_kips;
@@ -297,6 +299,7 @@ NodeValue node_value(const Group& g, const Node& node, double mean_lbf, Space s,
   // v.u and v.beta are filled lazily (node_u / node_beta): exp is costly.
   v.u = v.beta = kNaN;
   v.slack = lerp(a.slack, b.slack);
+  v.sag_ft = lerp(a.sag_ft, b.sag_ft);
   v.ci_level = a.ci_level;
   v.ci_low = lerp(a.ci_low_kips, b.ci_low_kips);
   v.ci_high = lerp(a.ci_high_kips, b.ci_high_kips);
@@ -332,7 +335,7 @@ struct Corner {
 };
 
 struct Evaluation {
-  double u = 0.0, beta = 0.0, mean_lbf = 0.0, slack = 0.0;
+  double u = 0.0, beta = 0.0, mean_lbf = 0.0, slack = 0.0, sag_ft = 0.0;
   double calc_lbf = kNaN, factor = kNaN;  // EQ-QUERY-9 (NaN when the group is absolute)
   double ci_level = 0.0, ci_low = 0.0, ci_high = 0.0;
   double bs_min = 0.0, bs_max = 0.0;
@@ -418,7 +421,7 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
     c.value = node_value(g, node, m, s, extrapolate);
   }
   double gu = 0.0, gb = 0.0;
-  ev->mean_lbf = ev->slack = ev->ci_low = ev->ci_high = 0.0;
+  ev->mean_lbf = ev->slack = ev->sag_ft = ev->ci_low = ev->ci_high = 0.0;
   ev->bs_min = std::numeric_limits<double>::infinity();
   ev->bs_max = 0.0;
   ev->above_bs = ev->mean_extrapolated = false;
@@ -432,6 +435,7 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
     gb += c.weight * v.g_beta;
     ev->mean_lbf += c.weight * v.mean_lbf;
     ev->slack += c.weight * v.slack;
+    ev->sag_ft += c.weight * v.sag_ft;
     ev->ci_low += c.weight * v.ci_low;
     ev->ci_high += c.weight * v.ci_high;
     ev->ci_level = v.ci_level;
@@ -624,6 +628,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
   struct Row {
     CaseRec rec;
     double folded_heading = 0.0, slack = 0.0, ci_level = 0.0, ci_low = 0.0, ci_high = 0.0, bs = 0.0;
+    double sag_ft = kNaN;
     bool above = false;
   };
   std::vector<std::vector<Row>> rows;
@@ -633,8 +638,9 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
         "SELECT c.case_id, c.tug_name, c.tow_name, c.line_type, c.speed_kt, c.spectrum, c.wind_kt, c.hs_ft, "
         "c.tp_s, c.gamma, c.swell_hs_ft, c.heading_deg, c.length_ft, c.mean_tension_lbf, c.days, "
         "r.gumbel_u_kips, r.gumbel_alpha_per_kip, r.dynamic_999_kips, r.ci_level, r.ci_low_kips, r.ci_high_kips, "
-        "r.breaking_strength_lbf, r.above_breaking_strength, r.slack_fraction, c.calculated_mean_tension_lbf "
-        "FROM cases c JOIN results r ON r.case_id = c.case_id WHERE c.status = 'done' ORDER BY c.case_id");
+        "r.breaking_strength_lbf, r.above_breaking_strength, r.slack_fraction, c.calculated_mean_tension_lbf, "
+        "f.sag_ft FROM cases c JOIN results r ON r.case_id = c.case_id "
+        "LEFT JOIN towline_fits f ON f.fit_id = c.fit_id WHERE c.status = 'done' ORDER BY c.case_id");
     while (st.step()) {
       Row r;
       r.rec.id = st.column_int(0);
@@ -664,6 +670,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
       r.above = st.column_int(22) != 0;
       r.slack = st.column_double(23);
       r.rec.calc_lbf = st.column_optional_double(24).value_or(kNaN);
+      r.sag_ft = st.column_optional_double(25).value_or(kNaN);
       if (!(std::isfinite(alpha) && alpha > 0.0 && std::isfinite(r.rec.u_kips) && std::isfinite(r.bs) && r.bs > 0.0 &&
             std::isfinite(r.rec.speed_kt) && std::isfinite(r.rec.length_ft) && std::isfinite(r.rec.mean_lbf))) {
         throw DatabaseError(path.string() + ": case " + std::to_string(r.rec.id) +
@@ -750,6 +757,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
       for (MeanPoint& p : node.points) {
         const double n = static_cast<double>(p.cases.size());
         double u = 0, beta = 0, slack = 0, lo = 0, hi = 0, level = 0, bs = std::numeric_limits<double>::infinity();
+        double sag = 0;
         bool above = false;
         for (int ci : p.cases) {
           const CaseRec& c = g.cases[ci];
@@ -758,6 +766,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
           // Per-case extras live in the Row list in the same order as g.cases.
           const Row& r = rs[ci];
           slack += r.slack;
+          sag += r.sag_ft;  // NaN when any case has no stored fit
           lo += r.ci_low;
           hi += r.ci_high;
           level = r.ci_level;
@@ -772,6 +781,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
           p.beta_kips = beta / n;
         }
         p.slack = slack / n;
+        p.sag_ft = sag / n;
         p.ci_low_kips = lo / n;
         p.ci_high_kips = hi / n;
         p.ci_level = level;
@@ -928,6 +938,7 @@ Answer Engine::query(const Request& r) const {
   ans.extreme_check_passed = ans.extreme_tension_lbf <= ans.extreme_limit_lbf;
   ans.mean_check_passed = ans.mean_tension_lbf <= ans.mean_limit_lbf;
   ans.slack_fraction = ev.slack;
+  ans.catenary_sag_ft = ev.sag_ft;
   ans.ci_level = ev.ci_level;
   ans.ci_low_kips = ev.ci_low;
   ans.ci_high_kips = ev.ci_high;

@@ -132,6 +132,7 @@ struct Answer {
   double ci_level = kNaN, ci_low_kips = kNaN, ci_high_kips = kNaN;
   double uncertainty_kips = kNaN;
   double slack_fraction = kNaN;
+  double catenary_sag_ft = kNaN;
   Space space = Space::kLinear;
   bool extrapolated = false;
   std::vector<Warning> warnings;

@@ -146,6 +146,33 @@ TEST_F(QueryTest, ReproducesEveryStoredCaseExactly) {
   }
 }
 
+// query-interp-1b
+TEST_F(QueryTest, CatenarySagIsInterpolatedWithTheTensionsWeights) {
+  // EVIDENCE-OF: EQ-QUERY-6 (the sag of the stored towline fits, weighted as u and beta in linear
+  // space: exact for a sag multilinear in the axes and linear in the mean tension; NaN without fits)
+  const GridSpec g = multilinear_grid();
+  auto sag = [](double s, double w, double h, double l, double m) {
+    return 5.0 + 0.02 * l - 2e-4 * m + 0.1 * s + 0.01 * w * l / 1000.0 + 0.001 * h;
+  };
+  std::vector<SyntheticCase> cases = grid_cases(g);
+  const std::string without = write(cases, "no-fits.towdb");
+  for (SyntheticCase& c : cases) c.sag_ft = sag(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf);
+  Database db(write(cases, "fits.towdb"), TOWDB_QUERY_SPACE_LOG);
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> us(3.0, 9.0), uw(20.0, 35.0), uh(0.0, 180.0), ul(800.0, 2000.0), uf(0.0, 1.0);
+  for (int i = 0; i < 100; ++i) {
+    const double s = us(rng), w = uw(rng), h = uh(rng), l = ul(rng);
+    const auto [m0, m1] = common_mean_range(g, s, w);
+    const double m = m0 + uf(rng) * (m1 - m0);
+    const QueryResult r = db.query(request(s, w, h, l, m));
+    EXPECT_REL_CLOSE(r.values.catenary_sag_ft, sag(s, w, h, l, m), kRoundOffRelTol) << s << " " << w << " " << h;
+  }
+  const SyntheticCase& c = cases.front();
+  EXPECT_TRUE(std::isnan(Database(without, TOWDB_QUERY_SPACE_LOG)
+                             .query(request(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf))
+                             .values.catenary_sag_ft));
+}
+
 // query-interp-2
 TEST_F(QueryTest, MultilinearFunctionIsReproducedAnywhere) {
   // EVIDENCE-OF: EQ-QUERY-6 (multilinear weights are exact for multilinear data)

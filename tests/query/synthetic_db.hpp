@@ -32,6 +32,7 @@ struct SyntheticCase {
   double ci_level = 0.9, ci_low_kips = kNoValue, ci_high_kips = kNoValue;  // NaN: +-5 % of dynamic_999
   double breaking_strength_lbf = 360000.0;
   double slack_fraction = 0.0;
+  double sag_ft = kNoValue;  // NaN: no towline_fits row (fit_id NULL)
   std::string status = "done";
 };
 
@@ -50,6 +51,14 @@ inline void write_synthetic_db(const std::filesystem::path& path, const std::vec
         "daily_max_variance_kips2, dynamic_999_kips, dynamic_99_kips, ci_level, ci_low_kips, ci_high_kips, "
         "max_daily_max_kips, breaking_strength_lbf, above_breaking_strength, slack_fraction, snatch_events_per_day, "
         "runtime_s, code_version) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17)");
+    // A fit row carries only what the query reads (the sag); the rest is 0.
+    auto ins_fit = db.prepare(
+        "INSERT INTO towline_fits (fit_key, tug_name, line_type, length_ft, mean_tension_lbf, towline_model, span_ft, "
+        "sag_ft, end_angle_tug_deg, end_angle_tow_deg, static_stiffness_lbf_per_ft, breaking_strength_lbf, "
+        "a10_lbf_per_ft, a01_lbf_s_per_ft, a20_lbf_per_ft2, a11_lbf_s_per_ft2, a02_lbf_s2_per_ft2, a30_lbf_per_ft3, "
+        "a21_lbf_s_per_ft3, a12_lbf_s2_per_ft3, a03_lbf_s3_per_ft3, fit_rms_lbf, fit_max_error_lbf, fit_samples) "
+        "VALUES (?1, ?2, ?3, ?4, ?5, 'test', 0, ?6, 0, 0, 0, ?7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0)");
+    auto set_fit = db.prepare("UPDATE cases SET fit_id = ?1 WHERE case_id = ?2");
     int k = 0;
     for (const SyntheticCase& c : cases) {
       ++k;
@@ -79,6 +88,18 @@ inline void write_synthetic_db(const std::filesystem::path& path, const std::vec
       ins_case.run();
       if (c.status != "done") continue;
       const std::int64_t id = db.last_insert_rowid();
+      if (!std::isnan(c.sag_ft)) {
+        ins_fit.bind(1, "fit-" + std::to_string(k))
+            .bind(2, c.tug)
+            .bind(3, c.line)
+            .bind(4, c.length_ft)
+            .bind(5, c.mean_tension_lbf)
+            .bind(6, c.sag_ft)
+            .bind(7, c.breaking_strength_lbf);
+        ins_fit.run();
+        set_fit.bind(1, db.last_insert_rowid()).bind(2, id);
+        set_fit.run();
+      }
       const double beta = 1.0 / c.alpha_per_kip;
       const double x999 = c.u_kips + beta * reduced_variate_999();
       const double x99 = c.u_kips - beta * std::log(-std::log(0.99));

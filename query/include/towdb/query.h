@@ -211,6 +211,10 @@ typedef struct towdb_query_result {
   int nearest_count;               /* nearest stored cases: towdb_query_nearest(db, i, ...) */
   double calculated_mean_tension_lbf; /* EQ-QUERY-9 T_calc at the query; NaN when not stored */
   double mean_tension_factor;         /* EQ-QUERY-9 mean / T_calc; NaN when not stored */
+  double catenary_sag_ft;             /* the static catenary's largest sag below the chord between the tow
+                                         points [ft], interpolated as the tension (the line hangs this far
+                                         below the straight line joining them: with the tow points' depths it
+                                         says whether the line reaches the bottom); NaN when not stored */
 } towdb_query_result;
 
 /* One stored case near the query, with its own values. */
