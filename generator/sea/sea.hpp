@@ -1,6 +1,6 @@
 // towdb::sea -- wave spectra and one-day random sea records in the encounter
 // frame, for the long-time towing simulation (thesis 3.7, program sapc97;
-// physics-notes.md sections 1 and 8).
+// docs/physics.md section 1).
 //
 // ============================================================================
 // GOVERNING EQUATIONS
