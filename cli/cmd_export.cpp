@@ -1,7 +1,7 @@
 // towdb export --db FILE --format posse-csv|appendix-c [--output FILE]
 //   posse-csv   the stable CSV that POSSE imports (column spec: schema/posse-csv.md)
 //   appendix-c  the thesis's Appendix C table layout (Desroches 1997), the
-//               columns of ../shared/validation/appendix_c_calibration.csv
+//               columns of tests/data/validation/appendix_c_calibration.csv
 // Only finished cases (status 'done' with a results row) are exported.
 #include <cstdio>
 #include <fstream>

@@ -50,8 +50,7 @@ endfunction()
 
 # towdb_add_test(<name> SOURCES <files...> LIBS <targets...> [LABELS <labels...>]
 #                [TIMEOUT <s>]): one GoogleTest executable, registered with ctest.
-# Tests run from the project root so data paths (ships/, tests/data/) resolve;
-# TOWDB_SHARED_DIR points at ../shared when it exists.
+# Tests run from the project root so data paths (ships/, tests/data/) resolve.
 function(towdb_add_test name)
   cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;LIBS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})

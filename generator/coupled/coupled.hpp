@@ -1,5 +1,5 @@
 // The 12-degree-of-freedom coupled model of tug + towline + tow in the
-// frequency domain (MIT 12D, program tow9712; thesis 3.4; physics-notes.md 7).
+// frequency domain (MIT 12D, program tow9712; thesis 3.4; docs/physics.md 5).
 //
 // DOFs: 0..5 the tug (surge, sway, heave, roll, pitch, yaw), 6..11 the tow,
 // each in its own ship-fixed axes (x forward, y port, z up, origin midships on

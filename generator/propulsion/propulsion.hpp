@@ -133,7 +133,7 @@
 //   for |mu| >= pi/2 and 0 for |mu| < pi/2.
 //
 // EQ-PROPULSION-12  Mean towline tension (thesis ch. 2; U.S. Navy Towing
-//   Manual App. G; physics-notes.md section 10):
+//   Manual App. G; docs/physics.md 4.5):
 //     R_tow = (1 + m) R_H + R_P + R_W + R_S
 //     R_line = f_line * max(R_tow, 0)     (f_line = 0.10, the manual's rule)
 //     T_mean = R_tow + R_line

@@ -1,4 +1,4 @@
-// The stored FFTW plan of the one-day record (physics-notes.md 8; sea.hpp
+// The stored FFTW plan of the one-day record (docs/physics.md 1.3; sea.hpp
 // EQ-SEA-8, EQ-SEA-9).
 //
 // Every day of every case takes eight c2r transforms of N = 86,400 points

@@ -1,6 +1,6 @@
 // towdb::sea -- wave spectra and one-day random sea records in the encounter
 // frame, for the long-time towing simulation (thesis 3.7, program sapc97;
-// physics-notes.md sections 1 and 8).
+// docs/physics.md section 1).
 //
 // ============================================================================
 // GOVERNING EQUATIONS
@@ -108,7 +108,8 @@
 // SOURCES
 //   Pierson & Moskowitz (1964) J. Geophys. Res. 69(24); ITTC (1978) 15th ITTC,
 //   Seakeeping Committee; Hasselmann et al. (1973) Dtsch. Hydrogr. Z. A8(12);
-//   DNV-RP-C205 (2010) 3.5.5; Newman (1974) 10th Symp. Naval Hydrodynamics;
+//   DNV-RP-C205 (2010) 3.5.5; Newman (1974) Int. Symp. Dynamics of Marine
+//   Vehicles and Structures in Waves, London;
 //   Desroches (1997) MIT thesis, 3.7 and 6.1 (eq. 3-21, 3-22, 6.1-6.3);
 //   Tucker, Challenor & Carter (1984) Appl. Ocean Res. 6(2) on deterministic
 //   vs random amplitudes; Frigo & Johnson (2005) Proc. IEEE 93(2) (FFTW).

@@ -2,7 +2,7 @@
 // Ursell-Tasai multipole method, the Salvesen-Tuck-Faltinsen (STF 1970)
 // ship-motion equations at forward speed in oblique waves, and the added
 // resistance of Gerritsma & Beukelman (1972). Part of the MIT 5D chain of
-// Desroches (1997) (physics-notes.md section 5).
+// Desroches (1997) (docs/physics.md section 3).
 //
 // ---------------------------------------------------------------------------
 // CONVENTIONS (re-derived here; every sign below was checked by a test)

@@ -299,8 +299,9 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
   geometry.separation_m = -tug.tow_point.x_m + r.towline.span_m + tow.tow_point.x_m;
   r.separation_m = geometry.separation_m;
   // The linearised line of the 12-DOF model: a10 and a01 of the polynomial.
-  // A slack wire's fit can give a10 <= 0 (towline module, weak point 3);
-  // then the static catenary stiffness dH/dX stands in (always > 0).
+  // A very slack wire's polynomial fit can give a10 <= 0 (the cubic follows the
+  // large runs, not the small-motion slope; docs/physics.md 2.3); then the
+  // static catenary stiffness dH/dX (EQ-TOWLINE-4) stands in (always > 0).
   const double a10 = m->fit->coefficients().a10();
   const coupled::LinearLine line{a10 > 0.0 ? a10 : r.towline.static_stiffness_n_m,
                                  std::max(0.0, m->fit->coefficients().a01())};

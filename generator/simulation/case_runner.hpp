@@ -1,6 +1,6 @@
 // One towing case from start to finish: the whole thesis chain for one tug,
 // tow, speed, sea, heading, towline and mean tension (thesis 3.7, Appendix A
-// programs cabnexp ... calcstat; physics-notes.md 1-9).
+// programs cabnexp ... calcstat; docs/physics.md sections 1-7).
 //
 // Steps (each module states its own equations):
 //   1. towline/  static catenary and the polynomial towline tau(xi, xi') fitted
@@ -83,8 +83,8 @@ struct CaseOptions {
   bool second_order_forces = true;     // Newman slowly varying surge forces (thesis: on)
   // Diagnostic (issue 17), off as in the thesis: build the tow's slowly
   // varying force from the wave envelope at the tow, G astern (EQ-CASE-2),
-  // instead of the envelope both vessels share in sapc97 (physics notes
-  // section 8: one envelope, f2_k = -|sum a_j sqrt(D_k) exp(i(w_e t + phi_j))|^2).
+  // instead of the envelope both vessels share in sapc97 (docs/physics.md
+  // 1.4: one envelope, f2_k = -|sum a_j sqrt(D_k) exp(i(w_e t + phi_j))|^2).
   // Physically the groups reach the tow later, but with the lag the head-sea
   // tensions move further from the thesis (docs/validation.md, "Issue 17").
   bool tow_drift_at_tow = false;

@@ -1,5 +1,5 @@
 // Nonlinear surge of tug and tow on the towline: the time-domain core of the
-// long-time towing simulation (thesis 3.7, program sapc97; physics-notes.md 8).
+// long-time towing simulation (thesis 3.7, program sapc97; docs/physics.md 6.1).
 //
 // Equations (re-derived; ship-fixed axes x forward, both vessels heading the
 // same way, the tug ahead; alpha_k the line's angle below horizontal at vessel

@@ -1,5 +1,5 @@
 // towdb::statistics -- extreme-value statistics of the daily maximum dynamic
-// tensions (thesis chapter 4 and Appendix B; physics-notes.md section 9).
+// tensions (thesis chapter 4 and Appendix B; docs/physics.md section 7).
 //
 // ============================================================================
 // GOVERNING EQUATIONS

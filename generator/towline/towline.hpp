@@ -61,8 +61,8 @@
 //     (c/2) tau^2, -dU/dq gives exactly EQ-TOWLINE-6 (lifting a sagging line,
 //     q > 0, slackens it; the (1/2) int q_p^2 term stiffens it as a string).
 //     The OCR of thesis eq. 3.2 reads "p0 - int .. q ds + 1/2 int ..^2 ds",
-//     which agrees; physics-notes.md section 3 prints both integral signs
-//     reversed, which would make EQ-TOWLINE-6 non-conservative.
+//     which agrees; both integral signs reversed would make EQ-TOWLINE-6
+//     non-conservative (docs/physics.md 2.2).
 //   EQ-TOWLINE-8  slack constraint: T + tau >= 0 everywhere, i.e.
 //                 tau = max(tau, -min_p T(p)). While slack the compatibility
 //                 is not enforced (the line hangs with zero tension at its

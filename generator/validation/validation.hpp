@@ -23,7 +23,7 @@
 //
 // Inputs of one case (database units, converted to SI at the edge by
 // case_inputs): tug, tow (catalog names), speed [kt], wind speed [kt] of a
-// fully developed Pierson-Moskowitz sea (physics-notes 1), wave heading [deg]
+// fully developed Pierson-Moskowitz sea (EQ-SEA-1, docs/physics.md 1.1), wave heading [deg]
 // with 0 = following seas and 180 = head seas (thesis / MIT 5D convention, the
 // same as sea::SeaState), hawser length [ft] (the tug's pendant is added by
 // ShipCatalog::towline), hawser kind, mean tension [lbf] = the horizontal

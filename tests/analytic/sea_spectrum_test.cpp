@@ -45,7 +45,7 @@ constexpr double kQuadratureRelTol = 1e-8;
 
 TEST(SeaSpectrum, PiersonMoskowitzWaveHeightLaw) {
   // EVIDENCE-OF: EQ-SEA-1
-  // Hs = 2 sqrt(alpha/beta) U^2/g, which physics-notes.md rounds to 0.2092 U^2/g,
+  // Hs = 2 sqrt(alpha/beta) U^2/g, which docs/physics.md rounds to 0.2092 U^2/g,
   // and w_p = (4 beta/5)^(1/4) g/U = 0.877 g/U.
   constexpr double kRoundedCoefficientRelTol = 5e-4;  // 0.2092 and 0.877 are printed to 4 and 3 digits
   for (double wind_kt : {10.0, 20.0, 35.0, 50.0}) {

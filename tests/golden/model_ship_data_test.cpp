@@ -138,7 +138,7 @@ TEST(ShipData, TatfSectionalAreasAgreeWithThesisSternStations) {
 
 // sd-4
 TEST(ShipData, HullResistanceRisesWithSpeed) {
-  // A falling R(V) would give negative hull surge damping dR/dV (physics notes 6).
+  // A falling R(V) would give negative hull surge damping dR/dV (EQ-PROPULSION-2, docs/physics.md 4.1).
   for (const io::VesselFile& vf : catalog().vessels()) {
     const Vessel& v = vf.vessel;
     SCOPED_TRACE(v.name);

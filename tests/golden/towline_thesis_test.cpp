@@ -52,7 +52,7 @@ std::shared_ptr<const TowlineFit> fit_for(const char* hawser, double length_ft, 
 
 // EVIDENCE-OF: EQ-TOWLINE-12
 // The brief's fit criterion (RMS fit error below 10% of the RMS dynamic
-// tension) on calibration cases of ../shared/validation/appendix_c_calibration.csv
+// tension) on calibration cases of tests/data/validation/appendix_c_calibration.csv
 // where the towline is nearly straight: every T-ATF nylon case and the
 // tautest T-ATF wire cases. (The whole table, including the catenary-
 // dominated wire cases that miss the criterion, is in

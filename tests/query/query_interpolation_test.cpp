@@ -259,7 +259,7 @@ TEST_F(QueryTest, LongerTowsAndOtherProbabilitiesFollowTheGumbelLaw) {
 
 // query-interp-6
 TEST_F(QueryTest, ThesisAppendixACheckValue) {
-  // EVIDENCE-OF: EQ-QUERY-3. Physics notes section 9 / thesis Appendix A sample
+  // EVIDENCE-OF: EQ-QUERY-3. EQ-STAT-3 (docs/physics.md 7) / thesis Appendix A sample
   // output: daily maxima with mean 41.06 kips and variance 10.80 kips^2 give a
   // method-of-moments Type I with x_0.999 = 57.27 kips.
   SyntheticCase c;

@@ -92,7 +92,7 @@ TEST(ValidationCaseInputs, ConvertsDatabaseUnitsToSi) {
   ASSERT_EQ(in.towline.segments.size(), 2u);
   EXPECT_EQ(in.towline.segments.front().component.kind, model::LineKind::kFiber);
   // Fully developed PM sea at 20 kt: Hs = 0.2092 U^2 / g = 2.257 m = 7.40 ft
-  // (physics-notes 1; the thesis's Table 5-4 gives 7.2 ft, a frequency
+  // (EQ-SEA-1, docs/physics.md 1.1; the thesis's Table 5-4 gives 7.2 ft, a frequency
   // cut-off explains part of the difference, so the closed form is checked).
   const double u = units::kt_to_m_s(20.0);
   EXPECT_REL_CLOSE(in.sea.significant_height_m(), 0.2092 * u * u / 9.80665, 2e-3);  // alpha, beta to 4 digits

@@ -1,6 +1,6 @@
 // The full thesis calibration set through `towdb validate` (label
 // "validation": long, not in the default suite). Runs every case of
-// ../shared/validation/appendix_c_calibration.csv (thesis Appendix C, 240
+// tests/data/validation/appendix_c_calibration.csv (thesis Appendix C, 240
 // cases) and checks that the run is complete and robust: every case has an
 // outcome (a failing case is reported, never aborts the run), the report and
 // the per-case CSV exist, and the agreement measures in the report are numbers. The agreement targets

@@ -105,8 +105,8 @@
  *   A handle must not be used from two threads at once; separate handles are
  *   independent. No function throws or aborts on bad input.
  *
- * SOURCE: Desroches, R. J. (1997), "Extreme towline tension in open ocean
- *   towing", MIT thesis, ch. 4 (Type I statistics), 6.1 (limits of the
+ * SOURCE: Desroches, A. S. (1997), "Calculation of extreme towline tension
+ *   during open ocean towing", MIT thesis, ch. 4 (Type I statistics), 6.1 (limits of the
  *   towline model above breaking strength), Appendix C (the database);
  *   U.S. Navy Towing Manual SL740-AA-MAN-010 (safety factors).
  */
