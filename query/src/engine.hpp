@@ -1,6 +1,6 @@
 // The query engine behind towdb/query.h (internal; not installed).
 //
-// The equations (EQ-QUERY-1 .. EQ-QUERY-8), conventions and units are stated
+// The equations (EQ-QUERY-1 .. EQ-QUERY-9), conventions and units are stated
 // once, in the public header query/include/towdb/query.h. This file holds the
 // C++ types; capi.cpp converts them to the C structs.
 //
