@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "common/error.hpp"
+#include "store/packed_days.hpp"
 
 namespace towdb::store {
 
@@ -18,6 +19,12 @@ struct Migration {
 const Migration kMigrations[] = {
 #include "schema_migrations.inc"
 };
+
+// A migration's second step where SQL alone cannot convert the data, run in
+// the same transaction after its SQL (by file name).
+void after_migration(Database& db, const std::string& name) {
+  if (name == "004_case_days.sql") pack_daily_maxima(db);
+}
 
 // Application id stamped in the file header so a towdb database can be told
 // apart from any other SQLite file ("TWDB" in ASCII).
@@ -111,6 +118,7 @@ void Database::migrate() {
     const Migration& m = kMigrations[version];
     transaction([&] {
       exec(m.sql);
+      after_migration(*this, m.name);
       exec("PRAGMA application_id = " + std::to_string(kApplicationId));
       exec("PRAGMA user_version = " + std::to_string(version + 1));
     });
@@ -195,6 +203,10 @@ Statement& Statement::bind_null(int index) {
 Statement& Statement::bind(int index, std::optional<double> value) {
   return value ? bind(index, *value) : bind_null(index);
 }
+Statement& Statement::bind_blob(int index, std::string_view bytes) {
+  check_bind(sqlite3_bind_blob64(stmt_, index, bytes.data(), bytes.size(), SQLITE_TRANSIENT), db_, index);
+  return *this;
+}
 
 bool Statement::step() {
   const int rc = sqlite3_step(stmt_);
@@ -224,6 +236,11 @@ std::string Statement::column_text(int column) const {
 std::optional<double> Statement::column_optional_double(int column) const {
   if (is_null(column)) return std::nullopt;
   return column_double(column);
+}
+std::string Statement::column_blob(int column) const {
+  const void* p = sqlite3_column_blob(stmt_, column);
+  const int n = sqlite3_column_bytes(stmt_, column);
+  return p ? std::string(static_cast<const char*>(p), static_cast<std::size_t>(n)) : std::string();
 }
 
 }  // namespace towdb::store

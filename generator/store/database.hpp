@@ -87,6 +87,7 @@ class Statement {
   Statement& bind(int index, const std::string& value) { return bind(index, std::string_view(value)); }
   Statement& bind_null(int index);
   Statement& bind(int index, std::optional<double> value);
+  Statement& bind_blob(int index, std::string_view bytes);
 
   // Steps once: true while a row is available.
   bool step();
@@ -99,6 +100,7 @@ class Statement {
   std::int64_t column_int(int column) const;
   std::string column_text(int column) const;
   std::optional<double> column_optional_double(int column) const;
+  std::string column_blob(int column) const;  // the bytes of a BLOB (empty for NULL)
 
  private:
   friend class Database;

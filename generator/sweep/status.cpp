@@ -15,7 +15,7 @@ StatusReport read_status(const std::filesystem::path& db_path, int max_builds, i
   };
   r.cases = count("SELECT count(*) FROM cases");
   r.results = count("SELECT count(*) FROM results");
-  r.daily_maxima = count("SELECT count(*) FROM daily_maxima");
+  r.daily_maxima = count("SELECT coalesce(sum(days), 0) FROM case_days");
   r.towline_fits = count("SELECT count(*) FROM towline_fits");
   r.vessels = count("SELECT count(*) FROM vessels");
   for (const char* s : {"pending", "running", "done", "failed"}) r.cases_by_status[s] = 0;

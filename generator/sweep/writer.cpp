@@ -8,6 +8,7 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "store/packed_days.hpp"
 
 namespace towdb::sweep {
 
@@ -220,7 +221,7 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
         "nominal_speed_kt = ?, calculated_mean_tension_lbf = ?, status = 'pending', error_message = NULL, fit_id = NULL, build_id = ?, "
         "updated_utc = ? WHERE case_id = ?");
     store::Statement drop_results = db_.prepare("DELETE FROM results WHERE case_id = ?");
-    store::Statement drop_days = db_.prepare("DELETE FROM daily_maxima WHERE case_id = ?");
+    store::Statement drop_days = db_.prepare("DELETE FROM case_days WHERE case_id = ?");
     store::Statement to_pending = db_.prepare(
         "UPDATE cases SET status = 'pending', error_message = NULL, build_id = ?, updated_utc = ? WHERE case_id = ?");
 
@@ -375,23 +376,15 @@ void DatabaseWriter::write_result(std::int64_t case_id, const CaseSpec& spec, co
           .bind(26, code_version);
       st.run();
     }
-    // Every day.
+    // Every day, packed into one row (schema/004_case_days.sql).
     {
-      store::Statement del = db_.prepare("DELETE FROM daily_maxima WHERE case_id = ?");
-      del.bind(1, case_id);
-      del.run();
-      store::Statement st = db_.prepare(
-          "INSERT INTO daily_maxima (case_id, day, max_dynamic_kips, slack_time_s, snatch_events) "
-          "VALUES (?, ?, ?, ?, ?)");
-      for (std::size_t d = 0; d < outcome.days.size(); ++d) {
-        const DayOutcome& day = outcome.days[d];
-        st.bind(1, case_id)
-            .bind(2, static_cast<std::int64_t>(d))
-            .bind(3, n_to_kips(day.max_dynamic_n))
-            .bind(4, day.slack_time_s)
-            .bind(5, day.snatch_events);
-        st.run();
+      store::CaseDays days;
+      for (const DayOutcome& day : outcome.days) {
+        days.max_dynamic_kips.push_back(n_to_kips(day.max_dynamic_n));
+        days.slack_time_s.push_back(day.slack_time_s);
+        days.snatch_events.push_back(day.snatch_events);
       }
+      store::write_case_days(db_, case_id, days);
     }
     store::Statement done = db_.prepare(
         "UPDATE cases SET status = 'done', error_message = NULL, fit_id = ?, build_id = ?, updated_utc = ? "
@@ -406,7 +399,7 @@ void DatabaseWriter::write_failure(std::int64_t case_id, const std::string& mess
     store::Statement del = db_.prepare("DELETE FROM results WHERE case_id = ?");
     del.bind(1, case_id);
     del.run();
-    store::Statement days = db_.prepare("DELETE FROM daily_maxima WHERE case_id = ?");
+    store::Statement days = db_.prepare("DELETE FROM case_days WHERE case_id = ?");
     days.bind(1, case_id);
     days.run();
     store::Statement st = db_.prepare(

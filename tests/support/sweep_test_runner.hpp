@@ -116,8 +116,8 @@ inline std::string dump_database(const std::filesystem::path& path, const std::s
     return "cannot open " + path.string();
   }
   std::string out;
-  for (const char* table : {"vessels", "towline_components", "towline_fits", "cases", "results", "daily_maxima"}) {
-    const std::string order = std::string(table) == "daily_maxima" ? "case_id, day" : "1";
+  for (const char* table : {"vessels", "towline_components", "towline_fits", "cases", "results", "case_days"}) {
+    const std::string order = "1";
     const std::string sql = std::string("SELECT * FROM ") + table + " ORDER BY " + order;
     sqlite3_stmt* st = nullptr;
     sqlite3_prepare_v2(db, sql.c_str(), -1, &st, nullptr);
@@ -135,6 +135,15 @@ inline std::string dump_database(const std::filesystem::path& path, const std::s
             std::snprintf(hex, sizeof hex, "%016" PRIx64,
                           std::bit_cast<std::uint64_t>(sqlite3_column_double(st, c)));
             out += hex;
+            break;
+          }
+          case SQLITE_BLOB: {
+            const auto* p = static_cast<const unsigned char*>(sqlite3_column_blob(st, c));
+            for (int b = 0; b < sqlite3_column_bytes(st, c); ++b) {
+              char hex[3];
+              std::snprintf(hex, sizeof hex, "%02x", p[b]);
+              out += hex;
+            }
             break;
           }
           default: out += reinterpret_cast<const char*>(sqlite3_column_text(st, c)); break;

@@ -1,7 +1,7 @@
 // Tests of the SQLite layer (generator/store): schema creation and migration
-// from an empty file, refusal of foreign, corrupt, newer or locked files, and a
+// from an empty file, refusal of foreign, corrupt, newer or locked files, a
 // bit-exact round trip of doubles through REAL columns (after SQLite
-// test/atof1.test).
+// test/atof1.test), and migration 4's packing of daily_maxima into case_days.
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -15,6 +15,7 @@
 
 #include "common/error.hpp"
 #include "store/database.hpp"
+#include "store/packed_days.hpp"
 #include "test_support.hpp"
 
 namespace towdb::store {
@@ -43,7 +44,7 @@ TEST_F(StoreTest, CreatesEveryTableFromAnEmptyFile) {
   EXPECT_EQ(db.schema_version(), latest_schema_version());
   EXPECT_GE(latest_schema_version(), 1);
   for (const char* table : {"meta", "vessels", "towline_components", "builds", "towline_fits", "cases", "results",
-                            "daily_maxima"}) {
+                            "case_days"}) {
     Statement s = db.prepare("SELECT count(*) FROM sqlite_schema WHERE type = 'table' AND name = ?1");
     s.bind(1, table);
     ASSERT_TRUE(s.step());
@@ -151,6 +152,72 @@ TEST_F(StoreTest, FailedTransactionLeavesNothing) {
   Statement s = db.prepare("SELECT count(*) FROM meta");
   ASSERT_TRUE(s.step());
   EXPECT_EQ(s.column_int(0), 0);
+}
+
+// A database of schema version 3 (daily_maxima, one row per day), made from a
+// new one by undoing migration 4 as 001_initial.sql and 004_case_days.sql
+// define it.
+void make_version_3(const std::filesystem::path& path) {
+  { Database db = Database::open(path, Database::Mode::kCreate); }
+  sqlite3* raw = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &raw), SQLITE_OK);
+  const char* sql =
+      "DROP TABLE case_days;"
+      "CREATE TABLE daily_maxima (case_id INTEGER NOT NULL REFERENCES cases (case_id) ON DELETE CASCADE,"
+      " day INTEGER NOT NULL CHECK (day >= 0), max_dynamic_kips REAL NOT NULL, slack_time_s REAL NOT NULL,"
+      " snatch_events INTEGER NOT NULL, PRIMARY KEY (case_id, day)) WITHOUT ROWID;"
+      "INSERT INTO cases (case_id, case_key, inputs_sha256, tug_name, tow_name, speed_kt, spectrum, heading_deg,"
+      " line_type, length_ft, mean_tension_lbf, days, seed) VALUES"
+      " (7, 'k7', 'h7', 'T-ATF 166', 'FFG 7', 9, 'pierson-moskowitz', 0, 'wire', 2000, 79000, 3, 1),"
+      " (9, 'k9', 'h9', 'T-ATF 166', 'FFG 7', 9, 'pierson-moskowitz', 90, 'wire', 2000, 79000, 2, 1);"
+      "INSERT INTO daily_maxima VALUES (7, 0, 101.25, 0, 0), (7, 1, 173.875, 12.5, 3), (7, 2, 99.0, 0, 0),"
+      " (9, 0, 20.5, 0, 0), (9, 1, 21.0, 0, 0);"
+      "PRAGMA user_version = 3;";
+  char* err = nullptr;
+  EXPECT_EQ(sqlite3_exec(raw, sql, nullptr, nullptr, &err), SQLITE_OK) << (err ? err : "");
+  sqlite3_free(err);
+  sqlite3_close(raw);
+}
+
+TEST_F(StoreTest, MigrationFourPacksEveryDayIntoOneRowPerCase) {
+  // EVIDENCE-OF: schema/004_case_days.sql (values exact in binary32 survive unchanged)
+  const auto path = dir_ / "v3.db";
+  make_version_3(path);
+  expect_input_error([&] { Database::open(path, Database::Mode::kReadOnly); }, "schema version 3 is older");
+  Database db = Database::open(path, Database::Mode::kReadWrite);  // migrates
+  EXPECT_EQ(db.schema_version(), latest_schema_version());
+  Statement gone = db.prepare("SELECT count(*) FROM sqlite_schema WHERE name = 'daily_maxima'");
+  ASSERT_TRUE(gone.step());
+  EXPECT_EQ(gone.column_int(0), 0);
+  const CaseDays a = read_case_days(db, 7);
+  EXPECT_EQ(a.max_dynamic_kips, (std::vector<double>{101.25, 173.875, 99.0}));
+  EXPECT_EQ(a.slack_time_s, (std::vector<double>{0.0, 12.5, 0.0}));
+  EXPECT_EQ(a.snatch_events, (std::vector<std::int64_t>{0, 3, 0}));
+  const CaseDays b = read_case_days(db, 9);
+  EXPECT_EQ(b.max_dynamic_kips, (std::vector<double>{20.5, 21.0}));
+  EXPECT_EQ(b.slack_time_s, (std::vector<double>{0.0, 0.0}));
+  Statement nulls = db.prepare("SELECT slack_time_s IS NULL, snatch_events IS NULL FROM case_days WHERE case_id = 9");
+  ASSERT_TRUE(nulls.step());
+  EXPECT_EQ(nulls.column_int(0), 1);  // never slack: no array stored
+  EXPECT_EQ(nulls.column_int(1), 1);
+}
+
+TEST_F(StoreTest, PackedDaysAreLittleEndianBinary32AndCheckedOnRead) {
+  // IEEE-754 binary32 of 1.0 is 0x3F800000, stored low byte first.
+  EXPECT_EQ(pack_float32({1.0}), std::string("\x00\x00\x80\x3f", 4));
+  EXPECT_EQ(pack_uint32({258}), std::string("\x02\x01\x00\x00", 4));
+  EXPECT_EQ(unpack_float32(pack_float32({0.1}), 1, "x")[0], static_cast<double>(0.1f));
+  expect_input_error([&] { unpack_float32(std::string(7, '\0'), 2, "case_days.max_dynamic_kips"); },
+                     "case_days.max_dynamic_kips: 7 bytes, expected 4 x 2 days");
+  expect_input_error([&] { pack_uint32({-1}); }, "snatch_events = -1");
+  Database db = Database::open(dir_ / "w.db", Database::Mode::kCreate);
+  db.exec("INSERT INTO cases (case_id, case_key, inputs_sha256, tug_name, tow_name, speed_kt, spectrum, heading_deg,"
+          " line_type, length_ft, mean_tension_lbf, days, seed) VALUES (1, 'k', 'h', 'A', 'B', 5, 'pierson-moskowitz',"
+          " 0, 'fiber', 800, 1000, 2, 1)");
+  expect_input_error([&] { write_case_days(db, 1, CaseDays{{1.0, 2.0}, {0.0}, {0, 0}}); }, "must be the same");
+  // The table's CHECK refuses an array that does not hold `days` values.
+  EXPECT_THROW(db.exec("INSERT INTO case_days (case_id, days, max_dynamic_kips) VALUES (1, 2, x'0000803f')"),
+               std::exception);
 }
 
 }  // namespace

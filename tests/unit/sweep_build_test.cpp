@@ -76,7 +76,8 @@ TEST(SweepBuild, StoresEveryCaseInSchemaUnits) {  // sweep-build-1
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE status = 'done'"), kSmallSweepCases);
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM results"), kSmallSweepCases);
   // 16 grid cases of 30 days, explicit-1 with 40 days, explicit-2 with the default 30.
-  EXPECT_EQ(query_int(db, "SELECT count(*) FROM daily_maxima"), 16 * 30 + 40 + 30);
+  EXPECT_EQ(query_int(db, "SELECT sum(days) FROM case_days"), 16 * 30 + 40 + 30);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM case_days WHERE length(max_dynamic_kips) = 4 * days"), kSmallSweepCases);
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM builds WHERE status = 'completed' AND cases_done = 18"), 1);
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM vessels"), 6);  // T-ATF, ARS 50, FFG 7, YRBM, AE 26, CG 47
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE fit_id IS NULL"), 0);

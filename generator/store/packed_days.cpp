@@ -1,0 +1,149 @@
+#include "store/packed_days.hpp"
+
+#include <bit>
+#include <cstring>
+#include <limits>
+
+#include "common/error.hpp"
+
+namespace towdb::store {
+
+namespace {
+
+void put_u32(std::string& out, std::uint32_t v) {
+  for (int b = 0; b < 4; ++b) out.push_back(static_cast<char>((v >> (8 * b)) & 0xFFu));
+}
+
+std::uint32_t get_u32(std::string_view blob, std::size_t i) {
+  std::uint32_t v = 0;
+  for (int b = 0; b < 4; ++b) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(blob[4 * i + b])) << (8 * b);
+  return v;
+}
+
+void check_length(std::string_view blob, std::size_t count, const std::string& field) {
+  if (blob.size() != 4 * count) {
+    throw InputError(field + ": " + std::to_string(blob.size()) + " bytes, expected 4 x " + std::to_string(count) +
+                     " days (the database is damaged)");
+  }
+}
+
+bool all_zero(const std::vector<double>& v) {
+  for (double x : v) {
+    if (x != 0.0) return false;
+  }
+  return true;
+}
+
+bool all_zero(const std::vector<std::int64_t>& v) {
+  for (std::int64_t x : v) {
+    if (x != 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string pack_float32(const std::vector<double>& values) {
+  std::string out;
+  out.reserve(4 * values.size());
+  for (double x : values) put_u32(out, std::bit_cast<std::uint32_t>(static_cast<float>(x)));
+  return out;
+}
+
+std::string pack_uint32(const std::vector<std::int64_t>& values) {
+  std::string out;
+  out.reserve(4 * values.size());
+  for (std::int64_t x : values) {
+    if (x < 0 || x > std::numeric_limits<std::uint32_t>::max()) {
+      throw InputError("snatch_events = " + std::to_string(x) + ": must be in [0, 4294967295]");
+    }
+    put_u32(out, static_cast<std::uint32_t>(x));
+  }
+  return out;
+}
+
+std::vector<double> unpack_float32(std::string_view blob, std::size_t count, const std::string& field) {
+  check_length(blob, count, field);
+  std::vector<double> out(count);
+  for (std::size_t i = 0; i < count; ++i) out[i] = std::bit_cast<float>(get_u32(blob, i));
+  return out;
+}
+
+std::vector<std::int64_t> unpack_uint32(std::string_view blob, std::size_t count, const std::string& field) {
+  check_length(blob, count, field);
+  std::vector<std::int64_t> out(count);
+  for (std::size_t i = 0; i < count; ++i) out[i] = get_u32(blob, i);
+  return out;
+}
+
+void write_case_days(Database& db, std::int64_t case_id, const CaseDays& days) {
+  const std::size_t n = days.max_dynamic_kips.size();
+  if (n == 0 || days.slack_time_s.size() != n || days.snatch_events.size() != n) {
+    throw InputError("case " + std::to_string(case_id) + ": day arrays of " + std::to_string(n) + ", " +
+                     std::to_string(days.slack_time_s.size()) + " and " + std::to_string(days.snatch_events.size()) +
+                     " values: must be the same, at least 1");
+  }
+  Statement st = db.prepare(
+      "INSERT OR REPLACE INTO case_days (case_id, days, max_dynamic_kips, slack_time_s, snatch_events) "
+      "VALUES (?, ?, ?, ?, ?)");
+  st.bind(1, case_id).bind(2, static_cast<std::int64_t>(n)).bind_blob(3, pack_float32(days.max_dynamic_kips));
+  if (all_zero(days.slack_time_s)) {
+    st.bind_null(4);
+  } else {
+    st.bind_blob(4, pack_float32(days.slack_time_s));
+  }
+  if (all_zero(days.snatch_events)) {
+    st.bind_null(5);
+  } else {
+    st.bind_blob(5, pack_uint32(days.snatch_events));
+  }
+  st.run();
+}
+
+CaseDays read_case_days(Database& db, std::int64_t case_id) {
+  Statement st =
+      db.prepare("SELECT days, max_dynamic_kips, slack_time_s, snatch_events FROM case_days WHERE case_id = ?");
+  st.bind(1, case_id);
+  if (!st.step()) throw InputError("case " + std::to_string(case_id) + ": no row in case_days");
+  const std::int64_t days = st.column_int(0);
+  if (days < 1) throw InputError("case_days.days = " + std::to_string(days) + ": must be >= 1");
+  const auto n = static_cast<std::size_t>(days);
+  CaseDays out;
+  out.max_dynamic_kips = unpack_float32(st.column_blob(1), n, "case_days.max_dynamic_kips");
+  out.slack_time_s = st.is_null(2) ? std::vector<double>(n, 0.0)
+                                   : unpack_float32(st.column_blob(2), n, "case_days.slack_time_s");
+  out.snatch_events = st.is_null(3) ? std::vector<std::int64_t>(n, 0)
+                                    : unpack_uint32(st.column_blob(3), n, "case_days.snatch_events");
+  return out;
+}
+
+void pack_daily_maxima(Database& db) {
+  Statement rows = db.prepare(
+      "SELECT case_id, day, max_dynamic_kips, slack_time_s, snatch_events FROM daily_maxima ORDER BY case_id, day");
+  std::int64_t current = -1;
+  CaseDays days;
+  const auto flush = [&] {
+    if (current >= 0) write_case_days(db, current, days);
+    days = CaseDays{};
+  };
+  while (rows.step()) {
+    const std::int64_t case_id = rows.column_int(0);
+    if (case_id != current) {
+      flush();
+      current = case_id;
+    }
+    const std::int64_t day = rows.column_int(1);
+    if (day != static_cast<std::int64_t>(days.max_dynamic_kips.size())) {
+      throw InputError("daily_maxima: case " + std::to_string(case_id) + " has day " + std::to_string(day) +
+                       " where day " + std::to_string(days.max_dynamic_kips.size()) +
+                       " was expected (days must run 0, 1, 2, ...)");
+    }
+    days.max_dynamic_kips.push_back(rows.column_double(2));
+    days.slack_time_s.push_back(rows.column_double(3));
+    days.snatch_events.push_back(rows.column_int(4));
+  }
+  flush();
+  db.exec("DROP TABLE daily_maxima");
+}
+
+}  // namespace towdb::store

@@ -1,0 +1,44 @@
+// Every simulated day of a case in one row (schema/004_case_days.sql): the
+// day arrays packed little-endian, 4 bytes a value, whatever the host's byte
+// order, so that a database file reads the same on any machine.
+//   max_dynamic_kips, slack_time_s: IEEE-754 binary32 (7 significant digits:
+//     the Type-I fits are computed from the doubles before storing, so the
+//     stored parameters do not depend on this rounding);
+//   snatch_events: unsigned 32-bit.
+#ifndef TOWDB_STORE_PACKED_DAYS_HPP
+#define TOWDB_STORE_PACKED_DAYS_HPP
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "store/database.hpp"
+
+namespace towdb::store {
+
+std::string pack_float32(const std::vector<double>& values);
+std::string pack_uint32(const std::vector<std::int64_t>& values);
+// Refuse a blob whose length is not 4 x `count` (InputError naming `field`).
+std::vector<double> unpack_float32(std::string_view blob, std::size_t count, const std::string& field);
+std::vector<std::int64_t> unpack_uint32(std::string_view blob, std::size_t count, const std::string& field);
+
+// One case's days, as the writer stores them and readers get them back.
+struct CaseDays {
+  std::vector<double> max_dynamic_kips;
+  std::vector<double> slack_time_s;        // all zero when never slack
+  std::vector<std::int64_t> snatch_events;  // all zero when none
+};
+
+// Replaces case `case_id`'s row of case_days (inside the caller's transaction).
+void write_case_days(Database& db, std::int64_t case_id, const CaseDays& days);
+// Reads it back (InputError naming the column when a blob does not match `days`).
+CaseDays read_case_days(Database& db, std::int64_t case_id);
+
+// Migration 4's second step: packs every row of daily_maxima into case_days
+// and drops daily_maxima (inside the migration's transaction).
+void pack_daily_maxima(Database& db);
+
+}  // namespace towdb::store
+
+#endif  // TOWDB_STORE_PACKED_DAYS_HPP
