@@ -54,6 +54,7 @@ struct ValidateArgs {
   bool added_resistance_aft_of_beam = false;
   bool signed_drift = false;
   bool linear_non_surge_tension = false;
+  bool nonnegative_wave_damping = false;
 };
 
 std::string read_text(const fs::path& path) {
@@ -124,6 +125,7 @@ std::string run_signature(const validation::RunOptions& o, const io::ShipCatalog
   if (o.added_resistance_aft_of_beam) os << " added_resistance_aft_of_beam=1";
   if (o.signed_drift) os << " signed_drift=1";
   if (o.linear_non_surge_tension) os << " linear_non_surge_tension=1";
+  if (o.nonnegative_wave_damping) os << " nonnegative_wave_damping=1";
   os << " ships_sha256=" << io::sha256_hex(hashes) << "\n";
   return os.str();
 }
@@ -208,6 +210,7 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
   options.added_resistance_aft_of_beam = a.added_resistance_aft_of_beam;
   options.signed_drift = a.signed_drift;
   options.linear_non_surge_tension = a.linear_non_surge_tension;
+  options.nonnegative_wave_damping = a.nonnegative_wave_damping;
   options.validate();
 
   const fs::path out(a.out_dir);
@@ -305,6 +308,7 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
   if (a.added_resistance_aft_of_beam) note << " --added-resistance-aft-of-beam";
   if (a.signed_drift) note << " --signed-drift";
   if (a.linear_non_surge_tension) note << " --linear-non-surge-tension";
+  if (a.nonnegative_wave_damping) note << " --nonnegative-wave-damping";
   note << "`. Simulated days per case = max(" << a.min_days << ", round(" << fmt(a.days_scale)
        << " x thesis days)); seed = thesis case number. Sum of case run times " << fmt(case_time_s, 0)
        << " s (this invocation: " << fmt(wall_s, 0) << " s wall, " << reused << " cases reused from the journal).";
@@ -375,6 +379,8 @@ void add_validate_command(CLI::App& app, Context& ctx) {
   c->add_flag("--linear-non-surge-tension", a->linear_non_surge_tension,
               "Diagnostic: the non-surge extension as a linear tension added to the polynomial's surge tension "
               "(EQ-SURGE-6)");
+  c->add_flag("--nonnegative-wave-damping", a->nonnegative_wave_damping,
+              "Diagnostic: hold each vessel's wave-induced surge damping at >= 0");
   c->callback([&ctx, a] { ctx.action = [&ctx, a] { return run_validate(ctx, *a); }; });
 }
 

@@ -349,7 +349,12 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
     }
   }
   // A negative wave-induced damping (a resistance that falls with speed) is
-  // kept: it is physics. The total surge damping must stay positive.
+  // kept: it is physics. The total surge damping must stay positive. (The
+  // diagnostic nonnegative_wave_damping holds it at 0, issue 17 lead 4.)
+  if (options.nonnegative_wave_damping) {
+    r.tug_wave_damping_n_s_m = std::max(0.0, r.tug_wave_damping_n_s_m);
+    r.tow_wave_damping_n_s_m = std::max(0.0, r.tow_wave_damping_n_s_m);
+  }
   const coupled::SurgeDampings dampings{tug_damping.total_n_s_m + r.tug_wave_damping_n_s_m,
                                         tow_damping.total_n_s_m + r.tow_wave_damping_n_s_m};
   require_input(dampings.tug_n_s_m > 0.0, "tug total surge damping (N s/m)", dampings.tug_n_s_m,

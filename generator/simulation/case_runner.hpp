@@ -97,6 +97,9 @@ struct CaseOptions {
   // linear tension (a10, a01 of the 12-DOF model's line) added to the
   // polynomial of the surge extension, instead of inside its argument.
   bool linear_non_surge_tension = false;
+  // Diagnostic (issue 17), off: the wave-induced surge damping held at >= 0
+  // per vessel (the thesis holds only its propeller damping positive).
+  bool nonnegative_wave_damping = false;
   seakeeping::ResponseOptions response;  // strip theory
   // Absolute-frequency grid of the transfer functions: uniform on [lo, hi],
   // independent of the sea so that responses are shared between cases

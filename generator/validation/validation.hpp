@@ -79,6 +79,8 @@ struct RunOptions {
   bool signed_drift = false;
   // Diagnostic (issue 17): EQ-SURGE-6 (CaseOptions::linear_non_surge_tension).
   bool linear_non_surge_tension = false;
+  // Diagnostic (issue 17): CaseOptions::nonnegative_wave_damping.
+  bool nonnegative_wave_damping = false;
   void validate() const;
 };
 
