@@ -3,9 +3,15 @@
 #   1. build and test tests/packaging/consumer with find_package(towdb)
 #      through `ctest --build-and-test` ({fmt}'s find-package-test);
 #   2. compile consumer.c with the flags of the installed towdb.pc.
-# Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR, GENERATOR, C_COMPILER, LIBDIR, VERSION.
+# Inputs: BUILD_DIR, SOURCE_DIR, WORK_DIR, GENERATOR, C_COMPILER, LIBDIR, VERSION,
+# SANITIZE (the library was built with TOWDB_SANITIZE: the consumers link the
+# sanitizer runtimes too, or the instrumented library cannot be loaded).
 file(REMOVE_RECURSE "${WORK_DIR}")
 set(prefix "${WORK_DIR}/prefix")
+set(sanitize_flags "")
+if(SANITIZE)
+  set(sanitize_flags "-fsanitize=address,undefined")
+endif()
 
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -26,7 +32,7 @@ endforeach()
 run(${CMAKE_CTEST_COMMAND} --build-and-test "${SOURCE_DIR}" "${WORK_DIR}/consumer"
     --build-generator "${GENERATOR}"
     --build-options "-DCMAKE_PREFIX_PATH=${prefix}" "-DTOWDB_EXPECTED_VERSION=${VERSION}"
-                    "-DCMAKE_C_COMPILER=${C_COMPILER}"
+                    "-DCMAKE_C_COMPILER=${C_COMPILER}" "-DCMAKE_EXE_LINKER_FLAGS=${sanitize_flags}"
     --test-command ${CMAKE_CTEST_COMMAND} --output-on-failure)
 message(STATUS "find_package consumer:\n${run_output}")
 
@@ -41,7 +47,7 @@ if(PKG_CONFIG_EXECUTABLE)
   if(NOT pc_version STREQUAL VERSION)
     message(FATAL_ERROR "towdb.pc version ${pc_version}, expected ${VERSION}")
   endif()
-  run("${C_COMPILER}" -std=c11 -Wall -Wextra -Werror "${SOURCE_DIR}/consumer.c" ${flags}
+  run("${C_COMPILER}" -std=c11 -Wall -Wextra -Werror ${sanitize_flags} "${SOURCE_DIR}/consumer.c" ${flags}
       "-Wl,-rpath,${prefix}/${LIBDIR}" -o "${WORK_DIR}/consumer_pc")
   run("${WORK_DIR}/consumer_pc" "${VERSION}")
   message(STATUS "pkg-config consumer: ${run_output}")
