@@ -1,5 +1,6 @@
 #include "store/packed_days.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <limits>
@@ -27,18 +28,9 @@ void check_length(std::string_view blob, std::size_t count, const std::string& f
   }
 }
 
-bool all_zero(const std::vector<double>& v) {
-  for (double x : v) {
-    if (x != 0.0) return false;
-  }
-  return true;
-}
-
-bool all_zero(const std::vector<std::int64_t>& v) {
-  for (std::int64_t x : v) {
-    if (x != 0) return false;
-  }
-  return true;
+template <typename T>
+bool all_zero(const std::vector<T>& v) {
+  return std::all_of(v.begin(), v.end(), [](T x) { return x == T{0}; });
 }
 
 }  // namespace

@@ -110,6 +110,19 @@ std::pair<double, double> common_mean_range(const GridSpec& g, double s, double 
   return {lo, hi};
 }
 
+// A random query inside the grid (speed 3-9 kt, wind 20-35 kt, heading 0-180
+// deg, length 800-2,000 ft) at a mean tension every corner node stores.
+struct QueryPoint {
+  double s, w, h, l, m;
+};
+
+QueryPoint random_point(std::mt19937& rng, const GridSpec& g) {
+  std::uniform_real_distribution<double> us(3.0, 9.0), uw(20.0, 35.0), uh(0.0, 180.0), ul(800.0, 2000.0), uf(0.0, 1.0);
+  const double s = us(rng), w = uw(rng), h = uh(rng), l = ul(rng);
+  const auto [m0, m1] = common_mean_range(g, s, w);
+  return {s, w, h, l, m0 + uf(rng) * (m1 - m0)};
+}
+
 GridSpec multilinear_grid() {
   GridSpec g;
   g.u_kips = u_multilinear;
@@ -159,11 +172,8 @@ TEST_F(QueryTest, CatenarySagIsInterpolatedWithTheTensionsWeights) {
   for (SyntheticCase& c : cases) c.sag_ft = sag(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf);
   Database db(write(cases, "fits.towdb"), TOWDB_QUERY_SPACE_LOG);
   std::mt19937 rng(2026);
-  std::uniform_real_distribution<double> us(3.0, 9.0), uw(20.0, 35.0), uh(0.0, 180.0), ul(800.0, 2000.0), uf(0.0, 1.0);
   for (int i = 0; i < 100; ++i) {
-    const double s = us(rng), w = uw(rng), h = uh(rng), l = ul(rng);
-    const auto [m0, m1] = common_mean_range(g, s, w);
-    const double m = m0 + uf(rng) * (m1 - m0);
+    const auto [s, w, h, l, m] = random_point(rng, g);
     const QueryResult r = db.query(request(s, w, h, l, m));
     EXPECT_REL_CLOSE(r.values.catenary_sag_ft, sag(s, w, h, l, m), kRoundOffRelTol) << s << " " << w << " " << h;
   }
@@ -180,11 +190,8 @@ TEST_F(QueryTest, MultilinearFunctionIsReproducedAnywhere) {
   Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LINEAR);
   EXPECT_EQ(db.space(), TOWDB_QUERY_SPACE_LINEAR);
   std::mt19937 rng(12345);
-  std::uniform_real_distribution<double> us(3.0, 9.0), uw(20.0, 35.0), uh(0.0, 180.0), ul(800.0, 2000.0), uf(0.0, 1.0);
   for (int i = 0; i < 300; ++i) {
-    const double s = us(rng), w = uw(rng), h = uh(rng), l = ul(rng);
-    const auto [m0, m1] = common_mean_range(g, s, w);
-    const double m = m0 + uf(rng) * (m1 - m0);
+    const auto [s, w, h, l, m] = random_point(rng, g);
     const QueryResult r = db.query(request(s, w, h, l, m));
     const double expected = u_multilinear(s, w, h, l, m) + reduced_variate_999() * beta_multilinear(s, w, h, l, m);
     EXPECT_REL_CLOSE(r.values.dynamic_999_kips, expected, kRoundOffRelTol) << s << " " << w << " " << h << " " << l << " " << m;
@@ -207,11 +214,8 @@ TEST_F(QueryTest, ExponentialFunctionIsExactInLogSpaceAndAutoChoosesLog) {
   EXPECT_LT(log_loo.max_rel_error, 1e-12);  // exp(linear) is linear in log space
   EXPECT_GT(lin_loo.median_rel_error, 1e-4);
   std::mt19937 rng(777);
-  std::uniform_real_distribution<double> us(3.0, 9.0), uw(20.0, 35.0), uh(0.0, 180.0), ul(800.0, 2000.0), uf(0.0, 1.0);
   for (int i = 0; i < 200; ++i) {
-    const double s = us(rng), w = uw(rng), h = uh(rng), l = ul(rng);
-    const auto [m0, m1] = common_mean_range(g, s, w);
-    const double m = m0 + uf(rng) * (m1 - m0);
+    const auto [s, w, h, l, m] = random_point(rng, g);
     const QueryResult r = db.query(request(s, w, h, l, m));
     EXPECT_EQ(r.values.interpolation_space, TOWDB_QUERY_SPACE_LOG);
     EXPECT_REL_CLOSE(r.values.gumbel_u_kips, u_exponential(s, w, h, l, m), kRoundOffRelTol);
