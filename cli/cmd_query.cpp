@@ -72,6 +72,7 @@ const char* warning_kind_name(int kind) {
     case TOWDB_QUERY_WARN_HIGH_TENSION: return "high_tension";
     case TOWDB_QUERY_WARN_BREAKING_DIFFERS: return "breaking_strength_differs";
     case TOWDB_QUERY_WARN_ABOVE_CAPACITY: return "above_tug_capacity";
+    case TOWDB_QUERY_WARN_EQUIVALENT_WIND: return "equivalent_wind";
     default: return "other";
   }
 }
@@ -173,6 +174,7 @@ ordered_json result_json(const QueryRequest& rq, const QueryResult& r, bool on_b
                               {"high_kips", nullable(v.ci_high_kips)}};
   j["slack_fraction"] = v.slack_fraction;
   j["catenary_sag_ft"] = nullable(v.catenary_sag_ft);
+  j["equivalent_wind_kt"] = nullable(v.equivalent_wind_kt);
   j["interpolation_space"] = space_name(v.interpolation_space);
   j["extrapolated"] = v.extrapolated != 0;
   ordered_json w = ordered_json::array();
@@ -200,7 +202,7 @@ ordered_json result_json(const QueryRequest& rq, const QueryResult& r, bool on_b
 const char* const kCsvHeader =
     "tug,tow,line,speed_kt,wind_kt,hs_ft,tp_s,heading_deg,length_ft,mean_tension_lbf,probability,tow_days,"
     "dynamic_tension_kips,dynamic_999_kips,extreme_tension_lbf,breaking_strength_lbf,extreme_check,mean_check,"
-    "uncertainty_kips,catenary_sag_ft,extrapolated,warnings,error";
+    "uncertainty_kips,catenary_sag_ft,equivalent_wind_kt,extrapolated,warnings,error";
 
 std::string csv_cell(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -233,9 +235,9 @@ std::string csv_row(const QueryRequest& rq, const QueryResult* r, const std::str
          csv_rounded(v.extreme_tension_lbf, 0) + "," + csv_rounded(v.breaking_strength_lbf, 0) + "," +
          (v.extreme_check_passed ? "pass" : "fail") + "," + (v.mean_check_passed ? "pass" : "fail") + "," +
          csv_rounded(v.uncertainty_kips, 1) + "," + csv_rounded(v.catenary_sag_ft, 1) + "," +
-         (v.extrapolated ? "1" : "0") + "," + csv_cell(warnings) + ",";
+         csv_rounded(v.equivalent_wind_kt, 2) + "," + (v.extrapolated ? "1" : "0") + "," + csv_cell(warnings) + ",";
   } else {
-    s += csv_num(q.mean_tension_lbf) + "," + csv_num(q.probability) + "," + csv_num(q.tow_days) + ",,,,,,,,,,," +
+    s += csv_num(q.mean_tension_lbf) + "," + csv_num(q.probability) + "," + csv_num(q.tow_days) + ",,,,,,,,,,,," +
          csv_cell(error);
   }
   return s;
@@ -391,6 +393,9 @@ void print_text(const QueryRequest& rq, const QueryResult& r, bool on_brake) {
   t.add_row({"breaking strength lbf", fmt_grouped(v.breaking_strength_lbf)});
   if (std::isfinite(v.catenary_sag_ft)) {
     t.add_row({"catenary sag ft (below the chord)", fmt(v.catenary_sag_ft, 1)});
+  }
+  if (std::isfinite(v.equivalent_wind_kt)) {
+    t.add_row({"equivalent wind kt (fully developed sea of this Hs)", fmt(v.equivalent_wind_kt, 2)});
   }
   t.add_row({"check extreme <= BS/1.5", check_text(v.extreme_tension_lbf, v.extreme_limit_lbf, v.extreme_check_passed)});
   t.add_row({std::string("check mean <= BS/") + (on_brake ? "5 (brake)" : "3 (ATM)"),

@@ -879,10 +879,73 @@ const Group& Engine::find_group(const Request& r) const {
 }
 
 // ---------------------------------------------------------------------------
+// EQ-QUERY-10: a sea given as Hs (and Tp) asked of a database of wind seas.
+
+namespace {
+
+// EQ-SEA-1 (generator/sea/sea.hpp), Pierson-Moskowitz: Hs = 0.2092 U^2 / g and
+// w_p = 0.877 g / U, U the wind at 19.5 m.
+constexpr double kPmHsCoefficient = 0.2092;
+constexpr double kPmPeakCoefficient = 0.877;
+// A Tp within this fraction of the fully developed sea's own is taken as that
+// sea (a choice, not a published limit: the planner's Tp is an estimate, and
+// the answer says which wind it used). Farther, the sea is swell or a young
+// sea, which a database of fully developed wind seas does not hold.
+constexpr double kEquivalentWindTpRelTol = 0.20;
+
+double pm_peak_period_s(double wind_kt) {
+  const double u_m_s = wind_kt * kMetersPerSecondPerKnot;
+  return 2.0 * std::numbers::pi * u_m_s / (kPmPeakCoefficient * kGravity_m_s2);
+}
+
+}  // namespace
+
+double equivalent_wind_kt(double hs_ft) {
+  const double hs_m = hs_ft * kMetersPerFoot;
+  return std::sqrt(hs_m * kGravity_m_s2 / kPmHsCoefficient) / kMetersPerSecondPerKnot;
+}
+
+// The request to answer: `r` itself, or, when `r` gives hs_ft and the
+// database holds only wind seas for its tug, tow and line, the same question
+// at the equivalent wind (EQ-QUERY-10); *wind_kt receives that wind (NaN when
+// not converted). A Tp far from the wind sea's is refused naming both.
+Request Engine::resolve_sea(const Request& r, double* wind_kt) const {
+  *wind_kt = kNaN;
+  const bool pm_family = r.spectrum.empty() || normalise_name(r.spectrum).rfind("pierson", 0) == 0;
+  if (std::isnan(r.hs_ft) || !pm_family) return r;
+  try {
+    (void)find_group(r);
+    return r;
+  } catch (const InputError&) {
+    Request w = r;
+    w.hs_ft = kNaN;
+    w.tp_s = kNaN;
+    w.spectrum.clear();
+    w.wind_kt = equivalent_wind_kt(r.hs_ft);
+    const Group& g = find_group(w);  // throws, naming the seas stored, when there are no wind seas either
+    if (!std::isnan(r.tp_s)) {
+      const double tp_pm = pm_peak_period_s(w.wind_kt);
+      if (std::abs(r.tp_s - tp_pm) > kEquivalentWindTpRelTol * tp_pm) {
+        throw OutOfRangeError("tp_s = " + format_value(r.tp_s) + " s: the database holds fully developed " +
+                              "(Pierson-Moskowitz) wind seas only for " + g.name() +
+                              "; the wind sea of Hs = " + format_value(r.hs_ft) + " ft (wind " +
+                              format_value(std::round(w.wind_kt * 100.0) / 100.0) + " kt) has Tp = " +
+                              format_value(std::round(tp_pm * 100.0) / 100.0) + " s, and a Tp within " +
+                              format_value(kEquivalentWindTpRelTol * 100.0) + " % of it is answered as that sea");
+      }
+    }
+    *wind_kt = w.wind_kt;
+    return w;
+  }
+}
+
+// ---------------------------------------------------------------------------
 // The query (EQ-QUERY-3 .. EQ-QUERY-7).
 
-Answer Engine::query(const Request& r) const {
-  r.validate();
+Answer Engine::query(const Request& asked) const {
+  asked.validate();
+  double wind_from_hs_kt = kNaN;
+  const Request r = resolve_sea(asked, &wind_from_hs_kt);
   const Group& g = find_group(r);
   const Space s = space_;
   const bool ex = r.extrapolate;
@@ -917,6 +980,7 @@ Answer Engine::query(const Request& r) const {
   const double c = std::log(r.tow_days) + gumbel_reduced_variate(r.probability);
   const double c999 = gumbel_reduced_variate(kPlanningProbability);
   Answer ans;
+  ans.equivalent_wind_kt = wind_from_hs_kt;
   ans.tug = g.tug;
   ans.tow = g.tow;
   ans.space = s;
@@ -953,6 +1017,13 @@ Answer Engine::query(const Request& r) const {
 
   // Warnings.
   auto warn = [&](WarningKind kind, std::string msg) { ans.warnings.push_back({kind, std::move(msg)}); };
+  if (!std::isnan(wind_from_hs_kt)) {
+    warn(WarningKind::kEquivalentWind,
+         "hs_ft = " + format_value(asked.hs_ft) + " ft answered as the fully developed (Pierson-Moskowitz) sea of " +
+             format_value(std::round(wind_from_hs_kt * 100.0) / 100.0) + " kt wind (Hs = 0.2092 U^2 / g, Tp " +
+             format_value(std::round(pm_peak_period_s(wind_from_hs_kt) * 100.0) / 100.0) +
+             " s): the database holds wind seas only");
+  }
   for (int a = 0; a < kGridAxes; ++a) {
     if (!br[a].outside) continue;
     ans.extrapolated = true;

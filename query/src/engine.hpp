@@ -54,6 +54,7 @@ enum class WarningKind : int {
   kHighTension = 6,
   kBreakingDiffers = 7,
   kAboveCapacity = 8,
+  kEquivalentWind = 9,
 };
 
 struct Warning {
@@ -133,6 +134,9 @@ struct Answer {
   double uncertainty_kips = kNaN;
   double slack_fraction = kNaN;
   double catenary_sag_ft = kNaN;
+  // EQ-QUERY-10: the wind whose fully developed sea has the asked Hs, when the
+  // question gave hs_ft and was answered from wind seas (NaN otherwise).
+  double equivalent_wind_kt = kNaN;
   Space space = Space::kLinear;
   bool extrapolated = false;
   std::vector<Warning> warnings;
@@ -154,6 +158,9 @@ struct LooStats {
   double median_rel_error = kNaN, p90_rel_error = kNaN, max_rel_error = kNaN;
   double median_abs_error_kips = kNaN;
 };
+
+// EQ-QUERY-10: the wind [kt] whose Pierson-Moskowitz sea has significant height hs_ft.
+double equivalent_wind_kt(double hs_ft);
 
 // EQ-QUERY-3: x(p, D) = u + beta (ln D - ln(-ln(1 - p))).
 double gumbel_quantile_kips(double u_kips, double beta_kips, double probability, double tow_days);
@@ -179,6 +186,7 @@ class Engine {
  private:
   Engine() = default;
   const Group& find_group(const Request& r) const;
+  Request resolve_sea(const Request& r, double* wind_kt) const;
   SearchResult search(const Request& request, int axis, bool maximise) const;
 
   std::vector<Group> groups_;

@@ -11,6 +11,8 @@
 //                export --format appendix-c reproduces the rows
 //   cli-query-7  export --format posse-csv: the documented header (schema/posse-csv.md)
 //   cli-query-8  query --leave-one-out --json reports both spaces and the chosen one
+//   cli-query-9  --hs-ft on a wind-sea database: answered at the equivalent wind (text, JSON, CSV); a far
+//                --tp-s exits 2 naming both periods (EQ-QUERY-10)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -337,6 +339,32 @@ TEST_F(CliQuery, LeaveOneOutReport) {  // cli-query-8
     if (row.at("space") == "log") saw_log = true;
   }
   EXPECT_TRUE(saw_log);
+}
+
+TEST_F(CliQuery, HsIsAnsweredThroughTheEquivalentWind) {  // cli-query-9
+  // Hs = 0.2092 U^2 / g (EQ-SEA-1): 25 kt = 12.861 m/s -> 3.5283 m = 11.576 ft; Tp = 2 pi U / (0.877 g) = 9.40 s.
+  const std::string sea = "query --db '" + db_ +
+                          "' --tug T-ATF --tow 'LHA 1' --line wire --heading-deg 300 --speed-kt 6 --length-ft 2000 "
+                          "--mean-tension-lbf 70000 --hs-ft 11.5763 ";
+  const CommandResult j = run_towdb(sea + "--tp-s 9.4 --json");
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  const json a = json::parse(j.out);
+  EXPECT_NEAR(a.at("equivalent_wind_kt").get<double>(), 25.0, 1e-3);
+  EXPECT_NEAR(a.at("dynamic_tension_kips").get<double>(), expected_999(6.0, 25.0, 2000.0), 1e-3);
+  EXPECT_EQ(a.at("warnings")[0].at("kind").get<std::string>(), "equivalent_wind");
+  const CommandResult text = run_towdb(sea);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("equivalent wind kt (fully developed sea of this Hs)  25.00"), std::string::npos)
+      << text.out;
+  const CommandResult csv = run_towdb(sea + "--csv");
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  EXPECT_NE(csv.out.find("uncertainty_kips,catenary_sag_ft,equivalent_wind_kt,"), std::string::npos) << csv.out;
+  EXPECT_NE(csv.out.find(",25.00,0,"), std::string::npos) << csv.out;
+  const CommandResult swell = run_towdb(sea + "--tp-s 14");
+  EXPECT_EQ(swell.exit_code, 2);
+  EXPECT_NE(swell.err.find("tp_s = 14 s"), std::string::npos) << swell.err;
+  EXPECT_NE(swell.err.find("has Tp = 9.4 s"), std::string::npos) << swell.err;
+  EXPECT_TRUE(swell.out.empty());
 }
 
 }  // namespace

@@ -20,9 +20,12 @@
 //                   T_calc at the query; a factor outside the stored ones is refused in its own terms; a question
 //                   the absolute axis refuses is answered; the tugs' capacity warning
 //   query-interp-16 max-speed stops where the calculated mean tension reaches the tugs' 125,000 lbf
+//   query-interp-17 a sea given as Hs (and Tp) on a wind-sea database: answered at the equivalent wind, said so;
+//                   a Tp far from that sea's refused naming both periods (EQ-QUERY-10)
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -669,6 +672,48 @@ TEST_F(QueryTest, MaxSpeedStopsAtTheTugsCapacity) {
   const auto none = db.max_speed(rq);
   EXPECT_EQ(none.search.found, 0);
   EXPECT_TRUE(has_warning(none.at_value, TOWDB_QUERY_WARN_ABOVE_CAPACITY));
+}
+
+// query-interp-17
+TEST_F(QueryTest, HsOnAWindSeaDatabaseIsAnsweredAtTheEquivalentWind) {
+  // EVIDENCE-OF: EQ-QUERY-10 with EQ-SEA-1 (Pierson-Moskowitz, U at 19.5 m): Hs = 0.2092 U^2 / g and
+  // Tp = 2 pi U / (0.877 g). U = 25 kt = 12.861 m/s gives Hs = 3.5283 m = 11.576 ft and Tp = 9.396 s.
+  Database db(write(grid_cases(multilinear_grid())), TOWDB_QUERY_SPACE_LINEAR);
+  const double wind_kt = 25.0;
+  const double u_m_s = wind_kt * kMetersPerSecondPerKnot;
+  const double hs_ft = 0.2092 * u_m_s * u_m_s / kGravity_m_s2 / kMetersPerFoot;
+  const double tp_s = 2.0 * std::numbers::pi * u_m_s / (0.877 * kGravity_m_s2);
+  EXPECT_NEAR(hs_ft, 11.576, 0.001);  // the hand value above
+  EXPECT_NEAR(tp_s, 9.396, 0.001);
+
+  const QueryResult by_wind = db.query(request(6.0, wind_kt, 100.0, 1200.0, 70000.0));
+  EXPECT_TRUE(std::isnan(by_wind.values.equivalent_wind_kt));
+  QueryRequest rq = request(6.0, kNoValue, 100.0, 1200.0, 70000.0);
+  rq.values.hs_ft = hs_ft;
+  for (double tp : {kNoValue, tp_s, 1.19 * tp_s, 0.81 * tp_s}) {
+    rq.values.tp_s = tp;
+    const QueryResult by_hs = db.query(rq);
+    EXPECT_NEAR(by_hs.values.equivalent_wind_kt, wind_kt, 1e-9) << tp;
+    EXPECT_REL_CLOSE(by_hs.values.dynamic_999_kips, by_wind.values.dynamic_999_kips, 1e-9);
+    EXPECT_TRUE(has_warning(by_hs, TOWDB_QUERY_WARN_EQUIVALENT_WIND));
+  }
+  // A Tp more than 20 % from the fully developed sea's: swell or a young sea, not stored.
+  for (double tp : {1.21 * tp_s, 0.79 * tp_s}) {
+    rq.values.tp_s = tp;
+    try {
+      (void)db.query(rq);
+      ADD_FAILURE() << "Tp " << tp << " s was answered";
+    } catch (const QueryError& e) {
+      EXPECT_EQ(e.code(), TOWDB_QUERY_RANGE);
+      const std::string what = e.what();
+      EXPECT_NE(what.find("tp_s = "), std::string::npos) << what;
+      EXPECT_NE(what.find("has Tp = 9.4 s"), std::string::npos) << what;
+    }
+  }
+  // A spectrum named other than Pierson-Moskowitz is not converted: no such seas are stored.
+  rq.values.tp_s = tp_s;
+  rq.spectrum = "jonswap";
+  EXPECT_THROW((void)db.query(rq), QueryError);
 }
 
 }  // namespace

@@ -86,6 +86,13 @@
  *             stored mean tensions. A node refuses an f outside its stored
  *             factors unless extrapolation is asked for. Without stored
  *             T_calc the mean tension is absolute (the same m at every node).
+ * EQ-QUERY-10 A sea given as Hs (optionally Tp) where the database holds
+ *             fully developed (Pierson-Moskowitz) wind seas only, for that
+ *             tug, tow and line: answered at the wind U whose sea has that Hs,
+ *               Hs = 0.2092 U^2 / g   (U at 19.5 m; generator EQ-SEA-1),
+ *             stated in the answer (equivalent_wind_kt and a warning). A Tp
+ *             more than 20 % from that sea's Tp = 2 pi U / (0.877 g) is
+ *             refused (TOWDB_QUERY_RANGE) naming both periods.
  *
  * CONVENTIONS AND UNITS
  *   Units are those of the database, in every name: kt, ft, lbf, kips
@@ -163,6 +170,7 @@ extern "C" {
 #define TOWDB_QUERY_WARN_HIGH_TENSION 6       /* dynamic tension above 300 kips: reduced accuracy (thesis 6.2) */
 #define TOWDB_QUERY_WARN_BREAKING_DIFFERS 7   /* the corner cases disagree on breaking strength */
 #define TOWDB_QUERY_WARN_ABOVE_CAPACITY 8     /* mean tension above the tugs' 125,000 lbf (thesis ch. 5) */
+#define TOWDB_QUERY_WARN_EQUIVALENT_WIND 9    /* hs_ft answered through the equivalent wind (EQ-QUERY-10) */
 
 typedef struct towdb_query_db towdb_query_db;
 
@@ -215,6 +223,8 @@ typedef struct towdb_query_result {
                                          points [ft], interpolated as the tension (the line hangs this far
                                          below the straight line joining them: with the tow points' depths it
                                          says whether the line reaches the bottom); NaN when not stored */
+  double equivalent_wind_kt;          /* EQ-QUERY-10: the wind of the fully developed sea with the asked
+                                         hs_ft, when the database holds wind seas only; NaN otherwise */
 } towdb_query_result;
 
 /* One stored case near the query, with its own values. */
