@@ -190,6 +190,8 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
   o.command_line = command_line(ctx, a);
   o.stop = &g_stop;
   o.session = &session;
+  o.coverage_notes = exp.notes;
+  o.skipped = exp.skipped;
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
   const sweep::BuildSummary s = sweep::run_build(a.db, file, exp.cases, catalog, *runner, o);

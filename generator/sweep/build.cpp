@@ -534,6 +534,7 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
     p.threads = options.threads;
     p.mpi_ranks = ranks;
     summary.build_id = writer->begin_build(p);
+    writer->record_coverage(summary.build_id, sweep.path, options.coverage_notes, options.skipped);
     store::Statement record = db->prepare("INSERT OR IGNORE INTO meta (key, value) VALUES (?, ?)");
     record.bind(1, kNumericsKey).bind(2, numerics_fingerprint()).run();
   } catch (...) {

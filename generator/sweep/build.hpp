@@ -50,6 +50,10 @@ struct BuildOptions {
   const std::atomic<bool>* stop = nullptr;
   // MPI session; nullptr (or size 1) = one process.
   const distributed::Session* session = nullptr;
+  // What the sweep leaves out and why (its expansion's notes and skipped
+  // conditions), recorded in coverage_notes for refused questions to name.
+  std::vector<CoverageNote> coverage_notes;
+  std::vector<SkippedCondition> skipped;
 
   // Throws InputError naming the field: threads in [1, 1024].
   void validate() const;

@@ -218,8 +218,8 @@ std::vector<double> read_list(io::StrictTable& t, std::string_view key, double l
 
 GridEntry read_grid(const toml::table& table, const std::string& path, const std::string& section,
                     const Settings& defaults) {
-  std::set<std::string> allowed = {"label", "tugs",     "tows",      "speeds_kt",    "winds_kt",
-                                   "seas",  "headings_deg", "towlines", "mean_tensions"};
+  std::set<std::string> allowed = {"label", "tugs",         "tows",     "speeds_kt",     "winds_kt",
+                                   "seas",  "headings_deg", "towlines", "mean_tensions", "coverage_note"};
   allowed.insert(kSettingKeys.begin(), kSettingKeys.end());
   check_keys(table, path, section, allowed);
   io::StrictTable t(table, path, section);
@@ -227,6 +227,10 @@ GridEntry read_grid(const toml::table& table, const std::string& path, const std
   g.line = static_cast<int>(table.source().begin.line);
   g.label = t.string("label");
   if (g.label.empty()) throw InputError(t.where("label") + ": must not be empty");
+  g.coverage_note = t.optional_string("coverage_note").value_or("");
+  if (t.has("coverage_note") && g.coverage_note.empty()) {
+    throw InputError(t.where("coverage_note") + ": must not be empty (leave the key out when there is nothing to say)");
+  }
   g.tugs = t.string_array("tugs");
   g.tows = t.string_array("tows");
   if (g.tugs.empty()) throw InputError(t.where("tugs") + ": is empty");
@@ -431,6 +435,7 @@ SweepExpansion expand_sweep(const SweepFile& sweep, const io::ShipCatalog& catal
       for (const TowlineChoice& tl : g.towlines) check_towline(tug, tl.line, tl.length_ft, where);
       for (const std::string& tow_name : g.tows) {
         const model::Vessel& tow = resolve_vessel(catalog, tow_name, where, false);
+        if (!g.coverage_note.empty()) out.notes.push_back({g.label, tug.name, tow.name, g.coverage_note});
         for (double v0_kt : g.speeds_kt) {
           for (const SeaSpec& sea : g.seas) {
             if (needs_calculated && !sea.wind_kt) {

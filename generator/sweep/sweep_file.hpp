@@ -54,6 +54,9 @@ struct GridEntry {
   int days = 0;
   std::int64_t base_seed = 0;
   MeanTensionModel mean_model;
+  // What the grid leaves out and why, in the sweep author's words ("" when
+  // none): stored in coverage_notes for a refused question to name.
+  std::string coverage_note;
 };
 
 // One explicit case (given mean tension unless a level says otherwise).
@@ -90,9 +93,18 @@ struct SkippedCondition {
   std::string reason;
 };
 
+// A grid's coverage_note for one of its tug and tow pairs (canonical names).
+struct CoverageNote {
+  std::string sweep_label;
+  std::string tug;
+  std::string tow;
+  std::string note;
+};
+
 struct SweepExpansion {
   std::vector<CaseSpec> cases;
   std::vector<SkippedCondition> skipped;
+  std::vector<CoverageNote> notes;
 };
 
 // R_S [N] of a tow at speed [kt] in a sea at wave heading [deg]: the hook

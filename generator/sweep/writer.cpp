@@ -143,6 +143,29 @@ std::int64_t DatabaseWriter::begin_build(const BuildProvenance& p) {
   return id;
 }
 
+void DatabaseWriter::record_coverage(std::int64_t build_id, const std::string& sweep_file,
+                                     const std::vector<CoverageNote>& notes,
+                                     const std::vector<SkippedCondition>& skipped) {
+  db_.transaction([&] {
+    store::Statement del = db_.prepare(
+        "DELETE FROM coverage_notes WHERE build_id IN (SELECT build_id FROM builds WHERE sweep_file = ?)");
+    del.bind(1, sweep_file).run();
+    store::Statement ins = db_.prepare(
+        "INSERT INTO coverage_notes (build_id, kind, sweep_label, tug_name, tow_name, nominal_speed_kt, sea, "
+        "heading_deg, note) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    for (const CoverageNote& n : notes) {
+      ins.reset();
+      ins.bind(1, build_id).bind(2, "grid_note").bind(3, n.sweep_label).bind(4, n.tug).bind(5, n.tow);
+      ins.bind_null(6).bind_null(7).bind_null(8).bind(9, n.note).run();
+    }
+    for (const SkippedCondition& k : skipped) {
+      ins.reset();
+      ins.bind(1, build_id).bind(2, "skipped").bind(3, k.sweep_label).bind(4, k.tug).bind(5, k.tow);
+      ins.bind(6, k.nominal_speed_kt).bind(7, k.sea).bind(8, k.heading_deg).bind(9, k.reason).run();
+    }
+  });
+}
+
 void DatabaseWriter::finish_build(std::int64_t build_id, const std::string& status, int cases_done,
                                   int cases_failed) {
   db_.transaction([&] {

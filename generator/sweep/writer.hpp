@@ -16,6 +16,7 @@
 #include "store/database.hpp"
 #include "sweep/case.hpp"
 #include "sweep/keys.hpp"
+#include "sweep/sweep_file.hpp"
 
 namespace towdb::sweep {
 
@@ -63,6 +64,10 @@ class DatabaseWriter {
   void mark_interrupted(const std::vector<std::int64_t>& build_ids);
 
   std::int64_t begin_build(const BuildProvenance& provenance);
+  // Replaces the coverage notes of earlier builds of the same sweep file by
+  // this build's (schema 5 coverage_notes; one transaction).
+  void record_coverage(std::int64_t build_id, const std::string& sweep_file, const std::vector<CoverageNote>& notes,
+                       const std::vector<SkippedCondition>& skipped);
   void finish_build(std::int64_t build_id, const std::string& status, int cases_done, int cases_failed);
 
   // Inserts the vessels, towline components and cases of a sweep (one

@@ -616,6 +616,31 @@ void Request::validate() const {
 // ---------------------------------------------------------------------------
 // Loading.
 
+namespace {
+
+// The builds' coverage notes (schema 5), grid notes first.
+std::vector<CoverageNote> load_coverage_notes(store::Database& db) {
+  std::vector<CoverageNote> out;
+  store::Statement st = db.prepare(
+      "SELECT DISTINCT tug_name, tow_name, sweep_label, note, kind = 'skipped', nominal_speed_kt, heading_deg, "
+      "sea FROM coverage_notes ORDER BY kind = 'skipped', note_id");
+  while (st.step()) {
+    CoverageNote n;
+    n.tug = st.column_text(0);
+    n.tow = st.column_text(1);
+    n.sweep_label = st.column_text(2);
+    n.note = st.column_text(3);
+    n.skipped = st.column_int(4) != 0;
+    n.nominal_speed_kt = st.column_optional_double(5).value_or(kNaN);
+    n.heading_deg = st.column_optional_double(6).value_or(kNaN);
+    n.sea = st.is_null(7) ? "" : st.column_text(7);
+    out.push_back(std::move(n));
+  }
+  return out;
+}
+
+}  // namespace
+
 Engine::Engine(Engine&&) noexcept = default;
 Engine& Engine::operator=(Engine&&) noexcept = default;
 Engine::~Engine() = default;
@@ -695,6 +720,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
       }
       rows[it->second].push_back(r);
     }
+    e.coverage_ = load_coverage_notes(db);
   } catch (const DatabaseError&) {
     throw;
   } catch (const InputError& err) {
@@ -947,6 +973,49 @@ Answer Engine::query(const Request& asked) const {
   double wind_from_hs_kt = kNaN;
   const Request r = resolve_sea(asked, &wind_from_hs_kt);
   const Group& g = find_group(r);
+  try {
+    return answer(asked, r, g, wind_from_hs_kt);
+  } catch (const OutOfRangeError& e) {
+    const std::string why = coverage_reason(g, r);
+    if (why.empty()) throw;
+    throw OutOfRangeError(e.what() + why);
+  }
+}
+
+// The builds' notes on what they left out for g's tug and tow: every grid
+// note, and the skipped condition nearest the question (speed in kt, heading
+// in 30 deg units) with the count of the others.
+std::string Engine::coverage_reason(const Group& g, const Request& r) const {
+  std::string why;
+  std::vector<std::string> seen;
+  const CoverageNote* nearest = nullptr;
+  double best = std::numeric_limits<double>::infinity();
+  int skipped = 0;
+  for (const CoverageNote& n : coverage_) {
+    if (n.tug != g.tug || n.tow != g.tow) continue;
+    if (!n.skipped) {
+      if (std::find(seen.begin(), seen.end(), n.note) != seen.end()) continue;
+      seen.push_back(n.note);
+      why += "; the database's build says of " + g.tug + " / " + g.tow + " (grid '" + n.sweep_label + "'): " + n.note;
+      continue;
+    }
+    ++skipped;
+    const double d = std::abs(n.nominal_speed_kt - r.speed_kt) +
+                     std::abs(fold_heading_deg(n.heading_deg) - fold_heading_deg(r.heading_deg)) / 30.0;
+    if (d < best) {
+      best = d;
+      nearest = &n;
+    }
+  }
+  if (nearest) {
+    why += "; the build could not tow " + std::to_string(skipped) + " condition" + (skipped == 1 ? "" : "s") +
+           " of " + g.tug + " / " + g.tow + " (EQ-SWEEP-3), nearest: " + format_value(nearest->nominal_speed_kt) +
+           " kt, " + nearest->sea + ", heading " + format_value(nearest->heading_deg) + " deg: " + nearest->note;
+  }
+  return why;
+}
+
+Answer Engine::answer(const Request& asked, const Request& r, const Group& g, double wind_from_hs_kt) const {
   const Space s = space_;
   const bool ex = r.extrapolate;
 

@@ -167,6 +167,15 @@ double gumbel_quantile_kips(double u_kips, double beta_kips, double probability,
 
 struct Group;
 
+// A note of the database's builds on what they left out (schema 5
+// coverage_notes): a grid's coverage_note, or a condition it could not tow.
+struct CoverageNote {
+  std::string tug, tow, sweep_label, note;
+  bool skipped = false;       // a skipped condition (else a grid note)
+  double nominal_speed_kt = kNaN, heading_deg = kNaN;
+  std::string sea;
+};
+
 class Engine {
  public:
   static Engine open(const std::filesystem::path& path, Space space, QueryOptions options = {});
@@ -187,9 +196,13 @@ class Engine {
   Engine() = default;
   const Group& find_group(const Request& r) const;
   Request resolve_sea(const Request& r, double* wind_kt) const;
+  Answer answer(const Request& asked, const Request& r, const Group& g, double wind_from_hs_kt) const;
+  // Why the builds left data out for the group's tug and tow ("" when they say nothing).
+  std::string coverage_reason(const Group& g, const Request& r) const;
   SearchResult search(const Request& request, int axis, bool maximise) const;
 
   std::vector<Group> groups_;
+  std::vector<CoverageNote> coverage_;
   Space space_ = Space::kLinear;
   bool log_ok_ = false;
   int case_count_ = 0;

@@ -5,6 +5,8 @@
 //   query-err-2  NaN, negative length, heading 400, probability 0 and 1, tow_days < 1, two seas -> INPUT
 //   query-err-3  missing, corrupt, truncated, non-towdb, empty databases -> TOWDB_QUERY_DATABASE
 //   query-err-4  forced log space on data with u <= 0 -> INPUT; name matching ignores case, spaces, hyphens
+//   query-err-5  a question outside the stored data names the builds' coverage notes of its tug and tow (schema 5)
+//                and their skipped condition nearest the question; other tugs' notes are not named
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -179,6 +181,41 @@ TEST_F(QueryErrors, LogSpaceNeedsPositiveLocationsAndNamesAreNormalised) {  // q
     r.tug = tug;
     EXPECT_NO_THROW(good.query(r)) << tug;
   }
+}
+
+
+TEST_F(QueryErrors, RefusalsNameTheBuildsCoverageNotes) {  // query-err-5
+  sqlite3* raw = nullptr;
+  ASSERT_EQ(sqlite3_open(good_.c_str(), &raw), SQLITE_OK);
+  const char* sql =
+      "INSERT INTO builds (build_id, code_version, command_line, sweep_file, sweep_sha256, host, threads, "
+      "started_utc, status) VALUES (1, 'test', 'test', 's.toml', 'x', 'h', 1, '2026-01-01T00:00:00Z', "
+      "'completed');"
+      "INSERT INTO coverage_notes (build_id, kind, sweep_label, tug_name, tow_name, note) VALUES "
+      "(1, 'grid_note', 'g', 'T-ATF 166', 'LHA 1', 'LHA 1 at 5 and 7 kt only: the tugs cannot hold more'),"
+      "(1, 'grid_note', 'g', 'ARS 50', 'LHA 1', 'a note of another tug');"
+      "INSERT INTO coverage_notes (build_id, kind, sweep_label, tug_name, tow_name, nominal_speed_kt, sea, "
+      "heading_deg, note) VALUES "
+      "(1, 'skipped', 'g', 'T-ATF 166', 'LHA 1', 9, 'wind_kt=20', 0, 'T_calc above the limit down to 3 kt'),"
+      "(1, 'skipped', 'g', 'T-ATF 166', 'LHA 1', 11, 'wind_kt=20', 0, 'a farther condition');";
+  ASSERT_EQ(sqlite3_exec(raw, sql, nullptr, nullptr, nullptr), SQLITE_OK) << sqlite3_errmsg(raw);
+  sqlite3_close(raw);
+  QueryRequest rq = valid();
+  rq.values.speed_kt = 9.5;
+  expect_error(rq, TOWDB_QUERY_RANGE,
+               "speed_kt = 9.5 is outside the stored range [5, 7] kt of T-ATF 166 / LHA 1 / wire; pass extrapolate "
+               "(--extrapolate) to extrapolate; the database's build says of T-ATF 166 / LHA 1 (grid 'g'): LHA 1 at 5 "
+               "and 7 kt only: the tugs cannot hold more; the build could not tow 2 conditions of T-ATF 166 / LHA 1 "
+               "(EQ-SWEEP-3), nearest: 9 kt, wind_kt=20, heading 0 deg: T_calc above the limit down to 3 kt");
+  Database db(good_);
+  try {
+    db.query(rq);
+  } catch (const QueryError& e) {
+    EXPECT_EQ(std::string(e.what()).find("another tug"), std::string::npos) << e.what();
+  }
+  // An answered question carries no note.
+  rq.values.speed_kt = 6.0;
+  EXPECT_NO_THROW(db.query(rq));
 }
 
 }  // namespace

@@ -22,6 +22,8 @@
 //   sweep-build-12 a database records the fingerprint of its first build; a build that
 //                  would compute cases with another one is refused untouched, one with
 //                  nothing to compute is not
+//   sweep-build-13 the sweep's coverage notes and skipped conditions are stored (schema 5
+//                  coverage_notes); the next build of the same sweep file replaces them
 #include <sqlite3.h>
 #include <sys/file.h>
 #include <fcntl.h>
@@ -416,6 +418,28 @@ TEST(SweepBuild, DatabaseKeepsOneNumericsFingerprint) {  // sweep-build-12
   expect_refused(f, db, "numerics_fingerprint = 0123456789abcdef", v2);
   const sweep::BuildSummary nothing_to_do = f.build(db, 1, make_test_runner());
   EXPECT_EQ(nothing_to_do.scheduled, 0);
+}
+
+TEST(SweepBuild, CoverageNotesAreStoredAndReplaced) {  // sweep-build-13
+  Fixture f;
+  const fs::path db = f.dir / "coverage.db";
+  sweep::BuildOptions o;
+  o.coverage_notes = {{"small-grid", "T-ATF 166", "FFG 7", "FFG 7 at 5 kt only"},
+                      {"small-grid", "T-ATF 166", "YRBM", "YRBM at 5 kt only"}};
+  o.skipped = {{"small-grid", "T-ATF 166", "YRBM", 9.0, "wind_kt=35", 180.0, "T_calc above 125,000 lbf down to 3 kt"}};
+  f.build(db, 1, make_test_runner(), o);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM coverage_notes WHERE kind = 'grid_note'"), 2);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM coverage_notes WHERE kind = 'skipped' AND nominal_speed_kt = 9 AND "
+                          "sea = 'wind_kt=35' AND heading_deg = 180 AND tow_name = 'YRBM' AND "
+                          "note = 'T_calc above 125,000 lbf down to 3 kt'"),
+            1);
+  // The same sweep file again, now with one note: the earlier build's notes go, this build's stay.
+  o.coverage_notes.pop_back();
+  o.skipped.clear();
+  f.build(db, 1, make_test_runner(), o);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM coverage_notes"), 1);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM coverage_notes WHERE build_id = (SELECT max(build_id) FROM builds)"),
+            1);
 }
 }  // namespace
 }  // namespace towdb::test

@@ -10,6 +10,8 @@
 //                 keys change exactly with their inputs (EQ-SWEEP-5/6)
 //   sweep-file-5  serialisation round trip is bit-exact
 //   sweep-file-6  options and CaseSpec validation name field, value and range
+//   sweep-file-7  a grid's coverage_note becomes one note per tug and tow pair, canonical names; an empty
+//                 note is refused
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -274,6 +276,23 @@ TEST(SweepFile, OptionsValidation) {  // sweep-file-6
   EXPECT_NE(sweep::default_case_runner(), nullptr);
   sweep::set_default_case_runner(nullptr);
   EXPECT_EQ(sweep::default_case_runner(), nullptr);
+}
+
+TEST(SweepFile, CoverageNotesNameEveryTugAndTowOfTheGrid) {  // sweep-file-7
+  const std::string note = "coverage_note = \"YRBM at 5 kt only: faster it yaws\"\n";
+  const std::string text = replace(kSmallSweepToml, "label = \"small-grid\"\n", "label = \"small-grid\"\n" + note);
+  const sweep::SweepFile f = sweep::parse_sweep(text, "notes.toml");
+  ASSERT_EQ(f.grids.size(), 1u);
+  EXPECT_EQ(f.grids[0].coverage_note, "YRBM at 5 kt only: faster it yaws");
+  const sweep::SweepExpansion e = sweep::expand_sweep(f, catalog());
+  ASSERT_EQ(e.notes.size(), 2u);  // T-ATF 166 with FFG 7 and with YRBM
+  EXPECT_EQ(e.notes[0].tug, "T-ATF 166");
+  EXPECT_EQ(e.notes[0].tow, "FFG 7");
+  EXPECT_EQ(e.notes[1].tow, "YRBM");
+  EXPECT_EQ(e.notes[1].sweep_label, "small-grid");
+  EXPECT_TRUE(sweep::expand_sweep(sweep::parse_sweep(kSmallSweepToml, "plain.toml"), catalog()).notes.empty());
+  expect_error(replace(kSmallSweepToml, "label = \"small-grid\"\n", "label = \"small-grid\"\ncoverage_note = \"\"\n"),
+               "grid[1].coverage_note: must not be empty");
 }
 
 }  // namespace
