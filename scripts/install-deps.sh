@@ -18,6 +18,8 @@ packages=(
   libbenchmark-dev
   libopenmpi-dev openmpi-bin   # distributed builds (TOWDB_MPI)
   gnuplot-nox          # PNG plots
+  python3-dev pybind11-dev   # the Python module (TOWDB_PYTHON)
+  python3-pytest python3-pandas   # its tests (and the DataFrame it returns)
 )
 
 missing=()
