@@ -17,7 +17,7 @@ packages=(
   libgtest-dev libgmock-dev
   libbenchmark-dev
   libopenmpi-dev openmpi-bin   # distributed builds (TOWDB_MPI)
-  gnuplot-nox          # PNG plots
+  gnuplot-nox          # PNG plots (towdb simulate --plot, towdb plan)
   python3-dev pybind11-dev   # the Python module (TOWDB_PYTHON)
   python3-pytest python3-pandas   # its tests (and the DataFrame it returns)
 )
