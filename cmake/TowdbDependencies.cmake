@@ -37,6 +37,18 @@ towdb_require(nlohmann_json_FOUND "nlohmann_json" "nlohmann-json3-dev")
 
 find_package(Threads REQUIRED)
 
+# towdb serve: cpp-httplib (Debian builds it as a library with a .pc file) and
+# the Chart.js the page draws with, served locally (no network at run time).
+if(PkgConfig_FOUND)
+  pkg_check_modules(CPPHTTPLIB QUIET IMPORTED_TARGET cpp-httplib)
+endif()
+towdb_require(CPPHTTPLIB_FOUND "cpp-httplib" "libcpp-httplib-dev")
+set(TOWDB_CHART_JS "/usr/share/javascript/chart.js/chart.min.js" CACHE FILEPATH
+    "Chart.js served by towdb serve (Debian libjs-chart.js)")
+if(NOT EXISTS "${TOWDB_CHART_JS}")
+  list(APPEND _towdb_missing "Chart.js at ${TOWDB_CHART_JS} (Debian package libjs-chart.js)")
+endif()
+
 # The Python module (TOWDB_PYTHON). Not under TOWDB_SANITIZE: a module built
 # with ASan can only be loaded into an interpreter started with the ASan
 # runtime preloaded (LD_PRELOAD), which Debian's python3 is not; the C API it

@@ -10,7 +10,7 @@ if(NOT SOURCE_DIR)
 endif()
 set(_folders generator query cli schema ships db/sweeps docs scripts bench cmake tests .ci python examples)
 set(_patterns "*.cpp" "*.hpp" "*.h" "*.c" "*.cmake" "CMakeLists.txt" "*.md" "*.toml" "*.sql" "*.sh" "*.py" "run"
-    "*.csv" "*.txt" "*.json")
+    "*.csv" "*.txt" "*.json" "*.html")
 set(_files "${SOURCE_DIR}/README.md" "${SOURCE_DIR}/CMakeLists.txt")
 foreach(folder IN LISTS _folders)
   foreach(pattern IN LISTS _patterns)
