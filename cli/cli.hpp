@@ -57,6 +57,8 @@ void add_towline_command(CLI::App& app, Context& ctx);
 void add_vessel_command(CLI::App& app, Context& ctx);
 void add_validate_command(CLI::App& app, Context& ctx);  // thesis Appendix C comparison
 void add_audit_command(CLI::App& app, Context& ctx);     // database answers vs direct simulation
+void add_plan_command(CLI::App& app, Context& ctx);      // pictures for a tow plan (gnuplot PNGs)
+void add_serve_command(CLI::App& app, Context& ctx);     // the planner web page and JSON API
 
 }  // namespace towdb::cli
 

@@ -29,6 +29,7 @@
 #include "common/units.hpp"
 #include "database_basis.hpp"
 #include "output.hpp"
+#include "query_json.hpp"
 #include "towdb/query.hpp"
 
 namespace towdb::cli {
@@ -704,6 +705,11 @@ void add_common_options(CLI::App* c, QueryArgs& a, bool speed, bool length) {
 }
 
 }  // namespace
+
+nlohmann::ordered_json query_answer_json(const query::QueryRequest& request, const query::QueryResult& result,
+                                         bool on_brake) {
+  return result_json(request, result, on_brake);
+}
 
 void add_query_commands(CLI::App& app, Context& ctx) {
   auto qa = std::make_shared<QueryArgs>();

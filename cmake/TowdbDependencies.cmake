@@ -37,7 +37,55 @@ towdb_require(nlohmann_json_FOUND "nlohmann_json" "nlohmann-json3-dev")
 
 find_package(Threads REQUIRED)
 
+# towdb serve: cpp-httplib (Debian builds it as a library with a .pc file) and
+# the Chart.js the page draws with, served locally (no network at run time).
+if(PkgConfig_FOUND)
+  pkg_check_modules(CPPHTTPLIB QUIET IMPORTED_TARGET cpp-httplib)
+endif()
+towdb_require(CPPHTTPLIB_FOUND "cpp-httplib" "libcpp-httplib-dev")
+set(TOWDB_CHART_JS "/usr/share/javascript/chart.js/chart.min.js" CACHE FILEPATH
+    "Chart.js served by towdb serve (Debian libjs-chart.js)")
+if(NOT EXISTS "${TOWDB_CHART_JS}")
+  list(APPEND _towdb_missing "Chart.js at ${TOWDB_CHART_JS} (Debian package libjs-chart.js)")
+endif()
+
+# The Python module (TOWDB_PYTHON). Not under TOWDB_SANITIZE: a module built
+# with ASan can only be loaded into an interpreter started with the ASan
+# runtime preloaded (LD_PRELOAD), which Debian's python3 is not; the C API it
+# wraps is tested under the sanitizers by tests/query.
+set(TOWDB_PYTHON_MODULE OFF)
+if(TOWDB_PYTHON AND TOWDB_SANITIZE)
+  message(STATUS "towdb: TOWDB_SANITIZE=ON: the Python module and its tests are not built")
+elseif(TOWDB_PYTHON)
+  # Debian's interpreter, the one that python3-pytest, python3-pandas and
+  # python3-selenium serve (a pyenv or venv python3 first on PATH would not see
+  # them); -DPython3_EXECUTABLE=... chooses another.
+  if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
+    set(Python3_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "Python interpreter of the towdb module and its tests")
+  endif()
+  find_package(Python3 QUIET COMPONENTS Interpreter Development.Module)
+  towdb_require(Python3_FOUND "Python 3 headers (TOWDB_PYTHON)" "python3-dev")
+  set(PYBIND11_FINDPYTHON ON)
+  find_package(pybind11 2.6 QUIET CONFIG)
+  towdb_require(pybind11_FOUND "pybind11 (TOWDB_PYTHON)" "pybind11-dev")
+  set(TOWDB_PYTHON_MODULE ON)
+endif()
+
+# towdb_require_python_module(<module> <debian package>): the test interpreter
+# imports <module>, or configuring fails naming the package.
+macro(towdb_require_python_module module debian_package)
+  execute_process(COMMAND "${Python3_EXECUTABLE}" -c "import ${module}"
+                  RESULT_VARIABLE _towdb_py_rc OUTPUT_QUIET ERROR_QUIET)
+  if(NOT _towdb_py_rc EQUAL 0)
+    list(APPEND _towdb_missing "Python module ${module} for ${Python3_EXECUTABLE} (Debian package ${debian_package})")
+  endif()
+endmacro()
+
 if(TOWDB_BUILD_TESTS)
+  if(TOWDB_PYTHON_MODULE)
+    towdb_require_python_module(pytest python3-pytest)
+    towdb_require_python_module(pandas python3-pandas)
+  endif()
   find_package(GTest QUIET CONFIG)
   towdb_require(GTest_FOUND "GoogleTest" "libgtest-dev libgmock-dev")
 endif()

@@ -17,7 +17,12 @@ packages=(
   libgtest-dev libgmock-dev
   libbenchmark-dev
   libopenmpi-dev openmpi-bin   # distributed builds (TOWDB_MPI)
-  gnuplot-nox          # PNG plots
+  gnuplot-nox          # PNG plots (towdb simulate --plot, towdb plan)
+  libcpp-httplib-dev   # towdb serve
+  libjs-chart.js       # the charts of towdb serve's page, served locally
+  python3-dev pybind11-dev   # the Python module (TOWDB_PYTHON)
+  python3-pytest python3-pandas   # its tests (and the DataFrame it returns)
+  chromium chromium-driver python3-selenium   # the page's test in headless Chromium
 )
 
 missing=()

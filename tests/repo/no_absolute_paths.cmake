@@ -8,9 +8,9 @@
 if(NOT SOURCE_DIR)
   message(FATAL_ERROR "no_absolute_paths: pass -DSOURCE_DIR=<repository root>")
 endif()
-set(_folders generator query cli schema ships db/sweeps docs scripts bench cmake tests .ci)
+set(_folders generator query cli schema ships db/sweeps docs scripts bench cmake tests .ci python examples)
 set(_patterns "*.cpp" "*.hpp" "*.h" "*.c" "*.cmake" "CMakeLists.txt" "*.md" "*.toml" "*.sql" "*.sh" "*.py" "run"
-    "*.csv" "*.txt" "*.json")
+    "*.csv" "*.txt" "*.json" "*.html")
 set(_files "${SOURCE_DIR}/README.md" "${SOURCE_DIR}/CMakeLists.txt")
 foreach(folder IN LISTS _folders)
   foreach(pattern IN LISTS _patterns)
