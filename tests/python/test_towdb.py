@@ -66,6 +66,14 @@ def test_readme_question_matches_the_cli(db):  # python-1
     assert a["interpolation_space"] == j["interpolation_space"]
 
 
+def test_hs_is_answered_through_the_equivalent_wind(db):  # python-1b
+    # EQ-QUERY-10: Hs = 0.2092 U^2 / g; 30 kt = 15.433 m/s -> 5.0811 m = 16.670 ft.
+    by_hs = db.query(**{k: v for k, v in README_QUESTION.items() if k != "wind_kt"}, hs_ft=16.67035)
+    assert abs(by_hs["equivalent_wind_kt"] - 30.0) < 1e-3
+    assert abs(by_hs["dynamic_999_kips"] / db.query(**README_QUESTION)["dynamic_999_kips"] - 1.0) < 1e-4
+    assert db.query(**README_QUESTION)["equivalent_wind_kt"] is None
+
+
 def test_query_many_answers_in_order(db):  # python-2
     questions = [dict(README_QUESTION, heading_deg=h) for h in (0, 90, 180)]
     answers = db.query_many(questions)
