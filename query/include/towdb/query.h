@@ -145,7 +145,8 @@ extern "C" {
                                    a stored value no towdb build writes (NaN, inf, alpha <= 0, dynamic_999 not
                                    u + beta y_999, ...: named with its case, table.column and value), or no
                                    finished cases */
-#define TOWDB_QUERY_NUMERICAL 5 /* the interpolant is not physical there (e.g. scale <= 0 when extrapolating) */
+#define TOWDB_QUERY_NUMERICAL 5 /* the interpolant is not physical there (e.g. scale <= 0, or a value not finite,
+                                   when extrapolating far) */
 #define TOWDB_QUERY_MISUSE 6    /* NULL handle or pointer, index out of range */
 #define TOWDB_QUERY_NOMEM 7     /* out of memory */
 
