@@ -616,6 +616,10 @@ void Request::validate() const {
 // ---------------------------------------------------------------------------
 // Loading.
 
+Engine::Engine(Engine&&) noexcept = default;
+Engine& Engine::operator=(Engine&&) noexcept = default;
+Engine::~Engine() = default;
+
 namespace {
 
 // A database that lies (issue 20 item 4): every value Engine::open reads is
@@ -711,10 +715,6 @@ void check_stored_row(const store::Statement& st, const std::filesystem::path& p
 }
 
 }  // namespace
-
-Engine::Engine(Engine&&) noexcept = default;
-Engine& Engine::operator=(Engine&&) noexcept = default;
-Engine::~Engine() = default;
 
 Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions options) {
   options.validate();
