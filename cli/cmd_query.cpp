@@ -419,7 +419,9 @@ void print_text(const QueryRequest& rq, const QueryResult& r, bool on_brake) {
 
 // ---- batch ------------------------------------------------------------------
 
-std::vector<std::string> split_csv_line(const std::string& line) {
+// The cells of one CSV line; *unterminated is set when a quoted cell has no
+// closing quote (the line cannot be read as the writer meant it).
+std::vector<std::string> split_csv_line(const std::string& line, bool* unterminated) {
   std::vector<std::string> cells;
   std::string cell;
   bool quoted = false;
@@ -444,6 +446,7 @@ std::vector<std::string> split_csv_line(const std::string& line) {
     }
   }
   cells.push_back(cell);
+  *unterminated = quoted;
   for (auto& s : cells) {
     while (!s.empty() && s.front() == ' ') s.erase(s.begin());
     while (!s.empty() && s.back() == ' ') s.pop_back();
@@ -457,7 +460,12 @@ int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean
   std::vector<std::string> header;
   while (header.empty() && std::getline(std::cin, line)) {
     ++line_no;
-    if (!line.empty() && line.find_first_not_of(" \r") != std::string::npos) header = split_csv_line(line);
+    bool unterminated = false;
+    if (!line.empty() && line.find_first_not_of(" \r") != std::string::npos) header = split_csv_line(line, &unterminated);
+    if (unterminated) {
+      throw InputError("stdin line " + std::to_string(line_no) + ": the header row has a quoted cell without its "
+                       "closing '\"'");
+    }
   }
   if (header.empty()) throw InputError("--batch: stdin has no CSV header row (e.g. tug,tow,speed_kt,...)");
   static const std::vector<std::string> kColumns = {
@@ -479,13 +487,18 @@ int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean
   while (std::getline(std::cin, line)) {
     ++line_no;
     if (line.find_first_not_of(" \r") == std::string::npos) continue;
-    const auto cells = split_csv_line(line);
-    if (cells.size() != header.size()) {
-      throw InputError("stdin line " + std::to_string(line_no) + ": " + std::to_string(cells.size()) +
-                       " cells, the header has " + std::to_string(header.size()));
+    // A row that cannot be read is reported on its own row like a bad question
+    // (the output keeps one row per input row; found by tests/fuzz/fuzz_batch_csv_test.cpp).
+    bool unterminated = false;
+    const auto cells = split_csv_line(line, &unterminated);
+    std::string row_error;
+    if (unterminated) {
+      row_error = "a quoted cell has no closing '\"'";
+    } else if (cells.size() != header.size()) {
+      row_error = std::to_string(cells.size()) + " cells, the header has " + std::to_string(header.size());
     }
     QueryArgs a = defaults;
-    for (std::size_t i = 0; i < header.size(); ++i) {
+    for (std::size_t i = 0; row_error.empty() && i < header.size(); ++i) {
       const std::string& h = header[i];
       const std::string& v = cells[i];
       if (v.empty()) continue;
@@ -495,8 +508,8 @@ int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean
       if (h == "spectrum") { a.spectrum = v; continue; }
       double x = 0;
       if (!parse_number(v, &x)) {
-        throw InputError("stdin line " + std::to_string(line_no) + ", column " + h + ": '" + v +
-                         "' is not a finite number");
+        row_error = "column " + h + ": '" + v + "' is not a finite number";
+        break;
       }
       if (h == "speed_kt") a.speed_kt = x;
       if (h == "wind_kt") a.wind_kt = x;
@@ -512,6 +525,7 @@ int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean
     }
     QueryRequest rq = to_request(a);
     try {
+      if (!row_error.empty()) throw QueryError(TOWDB_QUERY_INPUT, row_error);
       std::optional<MeanDefault> mean_default;
       try {
         mean_default = apply_mean_default(mean_defaults, a, &rq, db);
@@ -539,7 +553,10 @@ int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean
       std::cerr << "towdb: error: stdin " << msg << "\n";
     }
   }
-  if (defaults.json) std::cout << all.dump(2) << "\n";
+  // Bytes that are not UTF-8 (a name typed in Latin-1, echoed in an error) are
+  // written as U+FFFD: dump() would throw on them (exit 1; found by
+  // tests/fuzz/fuzz_batch_csv_test.cpp).
+  if (defaults.json) std::cout << all.dump(2, ' ', false, ordered_json::error_handler_t::replace) << "\n";
   return failures > 0 ? 2 : 0;
 }
 

@@ -41,6 +41,16 @@ std::string key_stem(std::string_view key) {
   return k;
 }
 
+// The number of a numeric node. toml++'s value<double>() refuses an integer
+// beyond +-2^53 (not exactly a double) with an empty optional, and .value()
+// on it threw std::bad_optional_access (exit 1) for "x_ft = [-9223372036854775808]";
+// here every integer converts to the nearest double, and the range check of
+// the caller names the key (tests/fuzz/regressions/vessels).
+double number_of(const toml::node& node) {
+  if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
+  return node.as_floating_point()->get();
+}
+
 }  // namespace
 
 toml::table parse_toml(std::string_view text, const std::string& path) {
@@ -150,7 +160,7 @@ double as_number(const StrictTable& t, std::string_view key, const toml::node& n
   if (!node.is_number()) {
     throw InputError(t.where(key) + ": is " + type_name(node) + ", expected a number");
   }
-  return node.value<double>().value();
+  return number_of(node);
 }
 void check_range(const StrictTable& t, std::string_view key, double value, double lo, double hi) {
   if (!std::isfinite(value) || value < lo || value > hi) {
@@ -192,7 +202,7 @@ std::vector<double> StrictTable::number_array(std::string_view key, double lo, d
     if (!item.is_number()) {
       fail(key, "element " + std::to_string(index) + " is " + type_name(item) + ", expected a number");
     }
-    const double v = item.value<double>().value();
+    const double v = number_of(item);
     if (!std::isfinite(v) || v < lo || v > hi) {
       fail(key, "element " + std::to_string(index) + " = " + format_value(v) +
                     ": must be a finite number between " + format_value(lo) + " and " + format_value(hi));
@@ -229,7 +239,7 @@ double StrictTable::sourced_number(std::string_view key, double lo, double hi) {
   const toml::table& t = sourced(key, &status, &source);
   const toml::node& node = *t.get("value");
   if (!node.is_number()) fail(key, "value is " + type_name(node) + ", expected a number");
-  const double v = node.value<double>().value();
+  const double v = number_of(node);
   if (!std::isfinite(v) || v < lo || v > hi) {
     fail(key, "value = " + format_value(v) + ": must be a finite number between " + format_value(lo) +
                   " and " + format_value(hi));

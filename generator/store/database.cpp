@@ -227,6 +227,15 @@ void Statement::reset() {
 }
 
 bool Statement::is_null(int column) const { return sqlite3_column_type(stmt_, column) == SQLITE_NULL; }
+const char* Statement::column_type_name(int column) const {
+  switch (sqlite3_column_type(stmt_, column)) {
+    case SQLITE_INTEGER: return "integer";
+    case SQLITE_FLOAT: return "real";
+    case SQLITE_TEXT: return "text";
+    case SQLITE_BLOB: return "blob";
+    default: return "null";
+  }
+}
 double Statement::column_double(int column) const { return sqlite3_column_double(stmt_, column); }
 std::int64_t Statement::column_int(int column) const { return sqlite3_column_int64(stmt_, column); }
 std::string Statement::column_text(int column) const {

@@ -96,6 +96,9 @@ class Statement {
   void reset();
 
   bool is_null(int column) const;
+  // SQL typeof() of a column of the current row: "integer", "real", "text",
+  // "blob" or "null" (a REAL column may hold text when CHECKs were bypassed).
+  const char* column_type_name(int column) const;
   double column_double(int column) const;
   std::int64_t column_int(int column) const;
   std::string column_text(int column) const;

@@ -645,6 +645,102 @@ Engine::Engine(Engine&&) noexcept = default;
 Engine& Engine::operator=(Engine&&) noexcept = default;
 Engine::~Engine() = default;
 
+namespace {
+
+// A database that lies (issue 20 item 4): every value Engine::open reads is
+// checked before use, and the first bad one is refused naming the file, the
+// case, table.column, the value and what is allowed (TOWDB_QUERY_DATABASE).
+// Column numbers are those of the SELECT in Engine::open.
+struct StoredNumber {
+  int column;
+  const char* name;  // table.column
+  bool nullable;
+  double lo, hi;     // allowed range; bounds open where flagged
+  bool lo_open, hi_open, whole;
+  const char* allowed;
+};
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+const StoredNumber kStoredNumbers[] = {
+    {4, "cases.speed_kt", false, 0.0, kInf, true, true, false, "a finite speed > 0"},
+    {6, "cases.wind_kt", true, 0.0, kInf, false, true, false, "NULL or a finite wind speed >= 0"},
+    {7, "cases.hs_ft", true, 0.0, kInf, true, true, false, "NULL or a finite wave height > 0"},
+    {8, "cases.tp_s", true, 0.0, kInf, true, true, false, "NULL or a finite peak period > 0"},
+    {9, "cases.gamma", true, 0.0, kInf, true, true, false, "NULL or a finite peak enhancement > 0"},
+    {11, "cases.heading_deg", false, 0.0, 360.0, false, false, false, "a heading in [0, 360]"},
+    {12, "cases.length_ft", false, 0.0, kInf, true, true, false, "a finite length > 0"},
+    {13, "cases.mean_tension_lbf", false, 0.0, kInf, true, true, false, "a finite mean tension > 0"},
+    {14, "cases.days", false, 1.0, 2147483647.0, false, false, true, "a whole number of days >= 1"},
+    {15, "results.gumbel_u_kips", false, -kInf, kInf, true, true, false, "a finite location"},
+    {16, "results.gumbel_alpha_per_kip", false, 0.0, kInf, true, true, false,
+     "a finite alpha > 0 (the Gumbel scale 1/alpha must be positive)"},
+    {17, "results.dynamic_999_kips", false, -kInf, kInf, true, true, false, "a finite tension"},
+    {18, "results.ci_level", false, 0.0, 1.0, true, true, false, "a confidence level in (0, 1)"},
+    {19, "results.ci_low_kips", false, -kInf, kInf, true, true, false, "a finite tension"},
+    {20, "results.ci_high_kips", false, -kInf, kInf, true, true, false, "a finite tension"},
+    {21, "results.breaking_strength_lbf", false, 0.0, kInf, true, true, false, "a finite breaking strength > 0"},
+    {22, "results.above_breaking_strength", false, 0.0, 1.0, false, false, true, "0 or 1"},
+    {23, "results.slack_fraction", false, 0.0, 1.0, false, false, false, "a fraction in [0, 1]"},
+    {24, "cases.calculated_mean_tension_lbf", true, 0.0, kInf, true, true, false,
+     "NULL or a finite mean tension > 0"},
+    {25, "towline_fits.sag_ft", true, 0.0, kInf, false, true, false, "NULL or a finite sag >= 0"},
+};
+
+// dynamic_999 = u + beta (-ln(-ln 0.999)) (EQ-QUERY-3) as stored: the
+// generator writes all three from one fit (agreement ~1e-16 on the bundled
+// database); 1e-6 admits values written as text with 7 significant digits.
+constexpr double kStoredQuantileRelTol = 1e-6;
+
+[[noreturn]] void refuse_stored(const std::filesystem::path& path, std::int64_t case_id, const std::string& what) {
+  throw DatabaseError(path.string() + ": case " + std::to_string(case_id) + ": " + what);
+}
+
+// Throws DatabaseError for the first value of the current row that no towdb
+// build can have written.
+void check_stored_row(const store::Statement& st, const std::filesystem::path& path) {
+  const std::int64_t id = st.column_int(0);
+  for (const StoredNumber& n : kStoredNumbers) {
+    const std::string type = st.column_type_name(n.column);
+    if (type == "null") {
+      if (n.nullable) continue;
+      refuse_stored(path, id, std::string(n.name) + " is NULL (NaN is stored as NULL); allowed: " + n.allowed);
+    }
+    if (type != "integer" && type != "real") {
+      const std::string shown = type == "text" ? "'" + st.column_text(n.column).substr(0, 40) + "'" : "a blob";
+      refuse_stored(path, id, std::string(n.name) + " = " + shown + " (" + type + "); allowed: " + n.allowed);
+    }
+    const double v = st.column_double(n.column);
+    const bool ok = std::isfinite(v) && (n.lo_open ? v > n.lo : v >= n.lo) && (n.hi_open ? v < n.hi : v <= n.hi) &&
+                    (!n.whole || v == std::floor(v));
+    if (!ok) refuse_stored(path, id, std::string(n.name) + " = " + format_value(v) + "; allowed: " + n.allowed);
+  }
+  if (st.is_null(6) && st.is_null(7)) {
+    refuse_stored(path, id, "cases.wind_kt and cases.hs_ft are both NULL; allowed: a sea with a wind speed or a wave "
+                            "height");
+  }
+  if (!st.is_null(7) && st.is_null(8)) {
+    refuse_stored(path, id, "cases.tp_s is NULL beside hs_ft = " + format_value(st.column_double(7)) +
+                                "; allowed: a two-parameter sea with its peak period");
+  }
+  const double u = st.column_double(15), alpha = st.column_double(16), x999 = st.column_double(17);
+  if (!std::isfinite(1.0 / alpha)) {
+    refuse_stored(path, id, "results.gumbel_alpha_per_kip = " + format_value(alpha) + " gives the Gumbel scale 1/alpha = " +
+                                format_value(1.0 / alpha) + "; allowed: an alpha whose scale 1/alpha is finite");
+  }
+  const double expected = u + (-std::log(-std::log1p(-0.001))) / alpha;
+  if (!(std::abs(x999 - expected) <= kStoredQuantileRelTol * std::max(1.0, std::abs(x999)))) {
+    refuse_stored(path, id, "results.dynamic_999_kips = " + format_value(x999) + " disagrees with gumbel_u_kips + " +
+                                "(-ln(-ln 0.999)) / gumbel_alpha_per_kip = " + format_value(expected) +
+                                " (EQ-QUERY-3); allowed: within a relative " + format_value(kStoredQuantileRelTol));
+  }
+  if (!(st.column_double(19) <= st.column_double(20))) {
+    refuse_stored(path, id, "results.ci_low_kips = " + format_value(st.column_double(19)) + " exceeds ci_high_kips = " +
+                                format_value(st.column_double(20)) + "; allowed: ci_low_kips <= ci_high_kips");
+  }
+}
+
+}  // namespace
+
 Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions options) {
   options.validate();
   Engine e;
@@ -675,6 +771,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
       const auto wind = st.column_optional_double(6), hs = st.column_optional_double(7);
       const auto tp = st.column_optional_double(8), gamma = st.column_optional_double(9);
       if (!st.is_null(10) || family.find("+swell") != std::string::npos) continue;  // swell seas: not gridded
+      check_stored_row(st, path);
       if (wind.has_value() == hs.has_value()) continue;                             // not one sea parameter
       r.rec.wind_kt = wind.value_or(kNaN);
       r.rec.hs_ft = hs.value_or(kNaN);
@@ -696,13 +793,6 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
       r.slack = st.column_double(23);
       r.rec.calc_lbf = st.column_optional_double(24).value_or(kNaN);
       r.sag_ft = st.column_optional_double(25).value_or(kNaN);
-      if (!(std::isfinite(alpha) && alpha > 0.0 && std::isfinite(r.rec.u_kips) && std::isfinite(r.bs) && r.bs > 0.0 &&
-            std::isfinite(r.rec.speed_kt) && std::isfinite(r.rec.length_ft) && std::isfinite(r.rec.mean_lbf))) {
-        throw DatabaseError(path.string() + ": case " + std::to_string(r.rec.id) +
-                            " has an invalid result (gumbel_alpha_per_kip = " + format_value(alpha) +
-                            ", gumbel_u_kips = " + format_value(r.rec.u_kips) + ", breaking_strength_lbf = " +
-                            format_value(r.bs) + "): alpha and breaking strength must be finite and > 0");
-      }
       r.rec.beta_kips = 1.0 / alpha;
       const auto key = std::make_tuple(tug, tow, line, (wind ? "wind:" : "hs:") + family);
       auto [it, inserted] = group_of.try_emplace(key, e.groups_.size());

@@ -167,8 +167,9 @@ TEST_F(QueryTest, CatenarySagIsInterpolatedWithTheTensionsWeights) {
   // EVIDENCE-OF: EQ-QUERY-6 (the sag of the stored towline fits, weighted as u and beta in linear
   // space: exact for a sag multilinear in the axes and linear in the mean tension; NaN without fits)
   const GridSpec g = multilinear_grid();
+  // Positive at every node (>= 23 ft): a stored sag below 0 is refused on open (a catenary hangs below its chord).
   auto sag = [](double s, double w, double h, double l, double m) {
-    return 5.0 + 0.02 * l - 2e-4 * m + 0.1 * s + 0.01 * w * l / 1000.0 + 0.001 * h;
+    return 30.0 + 0.02 * l - 2e-4 * m + 0.1 * s + 0.01 * w * l / 1000.0 + 0.001 * h;
   };
   std::vector<SyntheticCase> cases = grid_cases(g);
   const std::string without = write(cases, "no-fits.towdb");

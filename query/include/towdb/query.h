@@ -141,8 +141,12 @@ extern "C" {
 #define TOWDB_QUERY_ERROR 1     /* internal error (a bug: please report it) */
 #define TOWDB_QUERY_INPUT 2     /* a bad request: NaN, negative length, unknown vessel, p not in (0,1) */
 #define TOWDB_QUERY_RANGE 3     /* outside the stored data and extrapolation was not asked for */
-#define TOWDB_QUERY_DATABASE 4  /* missing, corrupt, not a towdb database, or no finished cases */
-#define TOWDB_QUERY_NUMERICAL 5 /* the interpolant is not physical there (e.g. scale <= 0 when extrapolating) */
+#define TOWDB_QUERY_DATABASE 4  /* missing, corrupt, not a towdb database, a schema version from the future,
+                                   a stored value no towdb build writes (NaN, inf, alpha <= 0, dynamic_999 not
+                                   u + beta y_999, ...: named with its case, table.column and value), or no
+                                   finished cases */
+#define TOWDB_QUERY_NUMERICAL 5 /* the interpolant is not physical there (e.g. scale <= 0, or a value not finite,
+                                   when extrapolating far) */
 #define TOWDB_QUERY_MISUSE 6    /* NULL handle or pointer, index out of range */
 #define TOWDB_QUERY_NOMEM 7     /* out of memory */
 
