@@ -727,7 +727,7 @@ void check_stored_row(const store::Statement& st, const std::filesystem::path& p
     refuse_stored(path, id, "results.gumbel_alpha_per_kip = " + format_value(alpha) + " gives the Gumbel scale 1/alpha = " +
                                 format_value(1.0 / alpha) + "; allowed: an alpha whose scale 1/alpha is finite");
   }
-  const double expected = u + (-std::log(-std::log1p(-0.001))) / alpha;
+  const double expected = u + gumbel_reduced_variate(kPlanningProbability) / alpha;  // EQ-QUERY-3
   if (!(std::abs(x999 - expected) <= kStoredQuantileRelTol * std::max(1.0, std::abs(x999)))) {
     refuse_stored(path, id, "results.dynamic_999_kips = " + format_value(x999) + " disagrees with gumbel_u_kips + " +
                                 "(-ln(-ln 0.999)) / gumbel_alpha_per_kip = " + format_value(expected) +
