@@ -66,7 +66,7 @@ std::string describe(const sweep::SweepFile& f) {
   std::ostringstream os;
   os << f.description << "\n";
   for (const auto& g : f.grids) {
-    os << "grid " << g.label << " days " << g.days << " seed " << g.base_seed << " model " << describe(g.mean_model)
+    os << "grid " << g.label << " note " << g.coverage_note << " days " << g.days << " seed " << g.base_seed << " model " << describe(g.mean_model)
        << "\n";
     for (const auto& x : g.tugs) os << " tug " << x << "\n";
     for (const auto& x : g.tows) os << " tow " << x << "\n";
