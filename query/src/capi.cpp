@@ -114,39 +114,6 @@ void to_result(const Answer& a, towdb_query_result* out) {
   out->equivalent_wind_kt = a.equivalent_wind_kt;
 }
 
-// An answer is returned only when it is physical: extrapolating far beyond
-// the stored data (extrapolate = 1 and, e.g., wind_kt = 1e300 or length_ft =
-// 2^63) can overflow the interpolated confidence interval to inf, or take the
-// default mean tension (each node's highest stored one) to 0 or below, while
-// the call succeeded (found by tests/fuzz/fuzz_query_api_test.cpp). Refused as
-// TOWDB_QUERY_NUMERICAL naming the field.
-void require_physical_answer(const Answer& a) {
-  const std::pair<const char*, double> values[] = {
-      {"dynamic_tension_kips", a.dynamic_tension_kips}, {"dynamic_999_kips", a.dynamic_999_kips},
-      {"mean_tension_lbf", a.mean_tension_lbf},         {"extreme_tension_lbf", a.extreme_tension_lbf},
-      {"gumbel_u_kips", a.gumbel_u_kips},               {"gumbel_alpha_per_kip", a.gumbel_alpha_per_kip},
-      {"interpolation_error_kips", a.interpolation_error_kips}, {"ci_low_kips", a.ci_low_kips},
-      {"ci_high_kips", a.ci_high_kips},                 {"uncertainty_kips", a.uncertainty_kips},
-      {"breaking_strength_lbf", a.breaking_strength_lbf}};
-  for (const auto& [name, v] : values) {
-    if (!std::isfinite(v)) {
-      throw towdb::NumericalError(std::string(name) + " = " + towdb::format_value(v) +
-                                  ": the answer is not finite (extrapolated too far from the stored data); "
-                                  "allowed: a question nearer the stored range");
-    }
-  }
-  const std::pair<const char*, double> positive[] = {{"mean_tension_lbf", a.mean_tension_lbf},
-                                                     {"gumbel_alpha_per_kip", a.gumbel_alpha_per_kip},
-                                                     {"breaking_strength_lbf", a.breaking_strength_lbf}};
-  for (const auto& [name, v] : positive) {
-    if (!(v > 0.0)) {
-      throw towdb::NumericalError(std::string(name) + " = " + towdb::format_value(v) +
-                                  ": not physical (extrapolated too far from the stored data); allowed: > 0, at a "
-                                  "question nearer the stored range");
-    }
-  }
-}
-
 int run_search(towdb_query_db* db, const towdb_query_request* request, towdb_query_search* search,
                towdb_query_result* at_value, bool speed) {
   if (!db) return TOWDB_QUERY_MISUSE;
@@ -170,7 +137,6 @@ int run_search(towdb_query_db* db, const towdb_query_request* request, towdb_que
       if (s.found) {
         (speed ? q.speed_kt : q.length_ft) = s.value;
         Answer a = db->engine->query(q);
-        require_physical_answer(a);
         to_result(a, at_value);
         db->tug = a.tug;
         db->tow = a.tow;
@@ -240,7 +206,6 @@ int towdb_query_run(towdb_query_db* db, const towdb_query_request* request, towd
     db->tug.clear();
     db->tow.clear();
     Answer a = db->engine->query(to_request(request));
-    require_physical_answer(a);
     to_result(a, result);
     db->warnings = std::move(a.warnings);
     db->nearest = std::move(a.nearest);

@@ -994,6 +994,44 @@ const Group& Engine::find_group(const Request& r) const {
   return *found.front();
 }
 
+namespace {
+
+// An answer is returned only when it is physical: extrapolating far beyond
+// the stored data (extrapolate = 1 and, e.g., wind_kt = 1e300 or length_ft =
+// 2^63) can overflow the interpolated confidence interval to inf, or take the
+// default mean tension (each node's highest stored one) to 0 or below, while
+// the call succeeded (found by tests/fuzz/fuzz_query_api_test.cpp). Refused as
+// TOWDB_QUERY_NUMERICAL naming the answer's field (and, by the caller, the
+// request fields that were extrapolated).
+void require_physical_answer(const Answer& a) {
+  const std::pair<const char*, double> values[] = {
+      {"dynamic_tension_kips", a.dynamic_tension_kips}, {"dynamic_999_kips", a.dynamic_999_kips},
+      {"mean_tension_lbf", a.mean_tension_lbf},         {"extreme_tension_lbf", a.extreme_tension_lbf},
+      {"gumbel_u_kips", a.gumbel_u_kips},               {"gumbel_alpha_per_kip", a.gumbel_alpha_per_kip},
+      {"interpolation_error_kips", a.interpolation_error_kips}, {"ci_low_kips", a.ci_low_kips},
+      {"ci_high_kips", a.ci_high_kips},                 {"uncertainty_kips", a.uncertainty_kips},
+      {"breaking_strength_lbf", a.breaking_strength_lbf}};
+  for (const auto& [name, v] : values) {
+    if (!std::isfinite(v)) {
+      throw NumericalError(std::string(name) + " = " + format_value(v) +
+                                  ": the answer is not finite (extrapolated too far from the stored data); "
+                                  "allowed: a question nearer the stored range");
+    }
+  }
+  const std::pair<const char*, double> positive[] = {{"mean_tension_lbf", a.mean_tension_lbf},
+                                                     {"gumbel_alpha_per_kip", a.gumbel_alpha_per_kip},
+                                                     {"breaking_strength_lbf", a.breaking_strength_lbf}};
+  for (const auto& [name, v] : positive) {
+    if (!(v > 0.0)) {
+      throw NumericalError(std::string(name) + " = " + format_value(v) +
+                                  ": not physical (extrapolated too far from the stored data); allowed: > 0, at a "
+                                  "question nearer the stored range");
+    }
+  }
+}
+
+}  // namespace
+
 // ---------------------------------------------------------------------------
 // EQ-QUERY-10: a sea given as Hs (and Tp) asked of a database of wind seas.
 
@@ -1133,8 +1171,31 @@ Answer Engine::answer(const Request& asked, const Request& r, const Group& g, do
     br[a] = make_bracket(g.axis[a], q[a], ex, field, unit, g.name());
   }
 
+  // Extrapolated far, the interpolant can leave the cell's nodes behind or stop
+  // being a distribution: such a refusal names the fields that were extrapolated.
+  auto name_extrapolated = [&](auto&& fn) {
+    std::string fields;
+    for (int a = 0; a < kGridAxes; ++a) {
+      if (!br[a].outside) continue;
+      const std::string field = a == kSea ? (g.wind_sea ? "wind_kt" : "hs_ft") : kAxisField[a];
+      fields += (fields.empty() ? "" : ", ") + field + " = " + format_value(q[a]) + " (stored " +
+                format_value(g.axis[a].front()) + " to " + format_value(g.axis[a].back()) + ")";
+    }
+    if (fields.empty() && !std::isnan(r.mean_tension_lbf)) {
+      fields = "mean_tension_lbf = " + format_value(r.mean_tension_lbf);
+    }
+    if (!ex || fields.empty()) return fn();
+    const std::string prefix = "extrapolated from " + fields + ": ";
+    try {
+      fn();
+    } catch (const NumericalError& e) {
+      throw NumericalError(prefix + e.what());
+    } catch (const OutOfRangeError& e) {
+      throw OutOfRangeError(prefix + e.what());
+    }
+  };
   Evaluation ev;
-  evaluate(g, br, MeanTarget{r.mean_tension_lbf, kNaN}, s, ex, &ev);
+  name_extrapolated([&] { evaluate(g, br, MeanTarget{r.mean_tension_lbf, kNaN}, s, ex, &ev); });
 
   const double c = std::log(r.tow_days) + gumbel_reduced_variate(r.probability);
   const double c999 = gumbel_reduced_variate(kPlanningProbability);
@@ -1167,12 +1228,16 @@ Answer Engine::answer(const Request& asked, const Request& r, const Group& g, do
   ans.ci_high_kips = ev.ci_high;
 
   auto x_at = [&](const NodeValue& v) { return node_u(v, s) + node_beta(v, s) * c; };
-  const double err =
-      interpolation_error_kips(g, br, ev, MeanTarget{r.mean_tension_lbf, ev.factor}, s, ex, c, ans.dynamic_tension_kips);
+  double err = 0.0;
+  name_extrapolated([&] {
+    err = interpolation_error_kips(g, br, ev, MeanTarget{r.mean_tension_lbf, ev.factor}, s, ex, c,
+                                   ans.dynamic_tension_kips);
+  });
   const int n_corners = 1 << ev.active_count;
   ans.interpolation_error_kips = err;
   const double ci_half = 0.5 * (ev.ci_high - ev.ci_low) * quantile_se_factor(c) / quantile_se_factor(c999);
   ans.uncertainty_kips = std::hypot(err, ci_half);
+  name_extrapolated([&] { require_physical_answer(ans); });
 
   // Warnings.
   auto warn = [&](WarningKind kind, std::string msg) { ans.warnings.push_back({kind, std::move(msg)}); };
