@@ -20,6 +20,7 @@
 #include <signal.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -74,13 +75,29 @@ const std::vector<std::string>& field_names() {
   return names;
 }
 
-// The field a library message names: its first word when that is a field.
+// The field a library message names: its first word when that is a field,
+// else the first field named anywhere in it as a whole word (a refusal of far
+// extrapolation starts "extrapolated from speed_kt = ...").
 std::string field_of(const std::string& message) {
   const std::string first = message.substr(0, message.find_first_of(" =:'"));
   for (const auto& f : field_names()) {
     if (f == first) return f;
   }
-  return "";
+  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::size_t best = std::string::npos;
+  std::string found;
+  for (const auto& f : field_names()) {
+    for (std::size_t p = message.find(f); p != std::string::npos && p < best; p = message.find(f, p + 1)) {
+      const bool whole = (p == 0 || !ident(message[p - 1])) &&
+                         (p + f.size() >= message.size() || !ident(message[p + f.size()]));
+      if (whole) {
+        best = p;
+        found = f;
+        break;
+      }
+    }
+  }
+  return found;
 }
 
 double parse_field_number(const std::string& field, const std::string& text) {
@@ -125,7 +142,9 @@ PlanQuestion to_question(const std::multimap<std::string, std::string>& params, 
     } else {
       std::string known;
       for (const auto& f : field_names()) known += (known.empty() ? "" : ", ") + f;
-      throw BadRequest{k + ": unknown field; allowed: " + known, k};
+      // An empty name is named by what it is (found by fuzz_http_api_test).
+      const std::string name = k.empty() ? "(empty name)" : k;
+      throw BadRequest{name + ": unknown field; allowed: " + known, name};
     }
   }
   for (const char* f : {"tug", "tow", "line"}) {
@@ -232,7 +251,9 @@ std::string read_file(const std::string& path) {
 
 void send_json(httplib::Response& res, int status, const ordered_json& j) {
   res.status = status;
-  res.set_content(j.dump(), "application/json");
+  // A request's bytes echoed in a message need not be UTF-8: they are written
+  // as U+FFFD rather than failing the answer (found by fuzz_http_api_test).
+  res.set_content(j.dump(-1, ' ', false, ordered_json::error_handler_t::replace), "application/json");
 }
 
 void send_error(httplib::Response& res, int status, const std::string& message, const std::string& field) {
@@ -282,6 +303,17 @@ class Server {
     });
     svr.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
       send_error(res, 500, "internal error", "");
+    });
+    // Errors of the HTTP layer itself (a request it cannot parse, a path the
+    // API does not have) are answered in the API's JSON too.
+    svr.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
+      if (!res.body.empty()) return;
+      if (res.status == 404) {
+        send_error(res, 404, "path: no such page or API: " + req.path, "path");
+      } else {
+        send_error(res, res.status, "request: not a request this server can read (HTTP " +
+                                        std::to_string(res.status) + ")", "request");
+      }
     });
   }
 
