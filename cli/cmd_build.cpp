@@ -192,6 +192,7 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
   o.session = &session;
   o.coverage_notes = exp.notes;
   o.skipped = exp.skipped;
+  o.lowest_elevation_m = sweep::static_lowest_elevation(build_case_options());
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
   const sweep::BuildSummary s = sweep::run_build(a.db, file, exp.cases, catalog, *runner, o);
@@ -205,6 +206,9 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
   std::cout << "build " << s.build_id << ": " << s.total << " cases; " << s.up_to_date << " up to date, "
             << s.scheduled << " scheduled, " << s.done << " done, " << s.failed << " failed";
   if (s.previously_failed > 0) std::cout << ", " << s.previously_failed << " failed earlier (--retry-failed)";
+  if (s.lowest_points_filled > 0) {
+    std::cout << "; the catenary's lowest point added to " << s.lowest_points_filled << " towline fits";
+  }
   std::cout << (s.interrupted ? "; interrupted (run again with the same command to continue)" : "") << "\n";
   return (s.failed > 0 || s.interrupted) ? 1 : 0;
 }

@@ -175,6 +175,7 @@ ordered_json result_json(const QueryRequest& rq, const QueryResult& r, bool on_b
                               {"high_kips", nullable(v.ci_high_kips)}};
   j["slack_fraction"] = v.slack_fraction;
   j["catenary_sag_ft"] = nullable(v.catenary_sag_ft);
+  j["catenary_depth_ft"] = nullable(v.catenary_depth_ft);
   j["equivalent_wind_kt"] = nullable(v.equivalent_wind_kt);
   j["interpolation_space"] = space_name(v.interpolation_space);
   j["extrapolated"] = v.extrapolated != 0;
@@ -203,7 +204,7 @@ ordered_json result_json(const QueryRequest& rq, const QueryResult& r, bool on_b
 const char* const kCsvHeader =
     "tug,tow,line,speed_kt,wind_kt,hs_ft,tp_s,heading_deg,length_ft,mean_tension_lbf,probability,tow_days,"
     "dynamic_tension_kips,dynamic_999_kips,extreme_tension_lbf,breaking_strength_lbf,extreme_check,mean_check,"
-    "uncertainty_kips,catenary_sag_ft,equivalent_wind_kt,extrapolated,warnings,error";
+    "uncertainty_kips,catenary_sag_ft,catenary_depth_ft,equivalent_wind_kt,extrapolated,warnings,error";
 
 std::string csv_cell(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -236,9 +237,10 @@ std::string csv_row(const QueryRequest& rq, const QueryResult* r, const std::str
          csv_rounded(v.extreme_tension_lbf, 0) + "," + csv_rounded(v.breaking_strength_lbf, 0) + "," +
          (v.extreme_check_passed ? "pass" : "fail") + "," + (v.mean_check_passed ? "pass" : "fail") + "," +
          csv_rounded(v.uncertainty_kips, 1) + "," + csv_rounded(v.catenary_sag_ft, 1) + "," +
+         csv_rounded(v.catenary_depth_ft, 1) + "," +
          csv_rounded(v.equivalent_wind_kt, 2) + "," + (v.extrapolated ? "1" : "0") + "," + csv_cell(warnings) + ",";
   } else {
-    s += csv_num(q.mean_tension_lbf) + "," + csv_num(q.probability) + "," + csv_num(q.tow_days) + ",,,,,,,,,,,," +
+    s += csv_num(q.mean_tension_lbf) + "," + csv_num(q.probability) + "," + csv_num(q.tow_days) + ",,,,,,,,,,,,," +
          csv_cell(error);
   }
   return s;
@@ -394,6 +396,11 @@ void print_text(const QueryRequest& rq, const QueryResult& r, bool on_brake) {
   t.add_row({"breaking strength lbf", fmt_grouped(v.breaking_strength_lbf)});
   if (std::isfinite(v.catenary_sag_ft)) {
     t.add_row({"catenary sag ft (below the chord)", fmt(v.catenary_sag_ft, 1)});
+  }
+  if (std::isfinite(v.catenary_depth_ft)) {
+    const double depth = v.catenary_depth_ft;
+    t.add_row({"catenary lowest point ft", fmt(std::abs(depth), 1) + (depth >= 0.0 ? " below" : " above") +
+                                              " the waterline"});
   }
   if (std::isfinite(v.equivalent_wind_kt)) {
     t.add_row({"equivalent wind kt (fully developed sea of this Hs)", fmt(v.equivalent_wind_kt, 2)});

@@ -244,6 +244,7 @@ py::dict answer_dict(const towdb_query_db* db, const Question& q, const towdb_qu
   d["ci_high_kips"] = nullable(v.ci_high_kips);
   d["slack_fraction"] = v.slack_fraction;
   d["catenary_sag_ft"] = nullable(v.catenary_sag_ft);
+  d["catenary_depth_ft"] = nullable(v.catenary_depth_ft);
   d["equivalent_wind_kt"] = nullable(v.equivalent_wind_kt);
   d["interpolation_space"] = v.interpolation_space == TOWDB_QUERY_SPACE_LOG ? "log" : "linear";
   d["extrapolated"] = v.extrapolated != 0;

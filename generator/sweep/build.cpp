@@ -7,6 +7,7 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <unordered_map>
 #include <system_error>
 #include <utility>
 
@@ -475,6 +476,33 @@ std::vector<PlannedCase> plan_build(const std::optional<std::filesystem::path>& 
   return plan;
 }
 
+namespace {
+
+// Fits stored before schema 6 get their lowest point from an up-to-date case
+// of this sweep that uses them (its key, hence the fit's inputs, unchanged).
+int fill_lowest_points(DatabaseWriter& writer, const std::vector<CaseSpec>& cases, const std::vector<CaseKeys>& keys,
+                       const std::vector<RegisteredCase>& registered, const io::ShipCatalog& catalog,
+                       const LowestPointFn& lowest_elevation_m) {
+  if (!lowest_elevation_m) return 0;
+  const std::vector<FitWithoutLowestPoint> missing = writer.fits_without_lowest_point();
+  if (missing.empty()) return 0;
+  std::unordered_map<std::int64_t, std::size_t> done_by_case_id;
+  for (std::size_t i = 0; i < registered.size(); ++i) {
+    if (registered[i].state == CaseState::kDone) done_by_case_id.emplace(registered[i].case_id, i);
+  }
+  std::vector<std::pair<std::int64_t, double>> filled;
+  for (const FitWithoutLowestPoint& m : missing) {
+    if (!filled.empty() && filled.back().first == m.fit_id) continue;
+    const auto it = done_by_case_id.find(m.case_id);
+    if (it == done_by_case_id.end() || keys[it->second].fit_id != m.fit_id) continue;
+    filled.emplace_back(m.fit_id, lowest_elevation_m(cases[it->second], catalog));
+  }
+  writer.set_lowest_points(filled);
+  return static_cast<int>(filled.size());
+}
+
+}  // namespace
+
 BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sweep,
                        const std::vector<CaseSpec>& cases, const io::ShipCatalog& catalog, const CaseRunner& runner,
                        const BuildOptions& options) {
@@ -544,6 +572,8 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
 
   try {
     registered = writer->register_cases(cases, keys, catalog, summary.build_id, options.retry_failed);
+    summary.lowest_points_filled =
+        fill_lowest_points(*writer, cases, keys, registered, catalog, options.lowest_elevation_m);
     summary.total = static_cast<int>(cases.size());
     for (std::size_t i = 0; i < cases.size(); ++i) {
       const CaseState state = registered[i].state;

@@ -54,6 +54,9 @@ struct BuildOptions {
   // conditions), recorded in coverage_notes for refused questions to name.
   std::vector<CoverageNote> coverage_notes;
   std::vector<SkippedCondition> skipped;
+  // Fills the lowest point of fits stored before schema 6 whose case is in
+  // this sweep and up to date (nullptr: leaves them NULL).
+  LowestPointFn lowest_elevation_m;
 
   // Throws InputError naming the field: threads in [1, 1024].
   void validate() const;
@@ -69,6 +72,7 @@ struct BuildSummary {
   int failed = 0;             // failed in this run
   bool interrupted = false;   // stopped before every scheduled case ran
   bool worker = false;        // an MPI worker rank: computed, wrote nothing
+  int lowest_points_filled = 0;  // fits stored before schema 6 given their lowest point
   std::vector<std::string> failures;  // "case_id N (label): reason", this run
 };
 

@@ -107,6 +107,7 @@ void CaseOutcome::validate() const {
   };
   finite("fit.span_m", fit.span_m);
   finite("fit.sag_m", fit.sag_m);
+  finite("fit.lowest_elevation_m", fit.lowest_elevation_m);
   finite("fit.end_angle_tug_rad", fit.end_angle_tug_rad);
   finite("fit.end_angle_tow_rad", fit.end_angle_tow_rad);
   finite("fit.static_stiffness_n_per_m", fit.static_stiffness_n_per_m);

@@ -95,6 +95,7 @@ struct TowlineFitOutcome {
   std::string towline_model = "polynomial";  // "polynomial" or "polynomial+spring"
   double span_m = 0.0;
   double sag_m = 0.0;
+  double lowest_elevation_m = 0.0;  // of the lowest point; negative below the waterline
   double end_angle_tug_rad = 0.0;  // below horizontal
   double end_angle_tow_rad = 0.0;  // below horizontal
   double static_stiffness_n_per_m = 0.0;
@@ -156,6 +157,10 @@ struct CaseOutcome {
 // are exceptions (NumericalError, InputError, ...): the builder records the
 // message in cases.error_message.
 using CaseRunner = std::function<CaseOutcome(const CaseSpec&, const io::ShipCatalog&)>;
+// The static catenary's lowest point of a case's towline [m above the still
+// waterline, negative below]: what a build fills in for fits stored before
+// schema 6 (the runner's fit carries it for new ones).
+using LowestPointFn = std::function<double(const CaseSpec&, const io::ShipCatalog&)>;
 
 // The production runner is registered once by the CLI (the simulation chain);
 // `towdb build` refuses to run while none is registered.

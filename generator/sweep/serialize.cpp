@@ -147,6 +147,7 @@ void write_outcome(ByteWriter& w, const CaseOutcome& o) {
   w.str(f.towline_model);
   w.f64(f.span_m);
   w.f64(f.sag_m);
+  w.f64(f.lowest_elevation_m);
   w.f64(f.end_angle_tug_rad);
   w.f64(f.end_angle_tow_rad);
   w.f64(f.static_stiffness_n_per_m);
@@ -189,6 +190,7 @@ CaseOutcome read_outcome(ByteReader& r) {
   f.towline_model = r.str();
   f.span_m = r.f64();
   f.sag_m = r.f64();
+  f.lowest_elevation_m = r.f64();
   f.end_angle_tug_rad = r.f64();
   f.end_angle_tow_rad = r.f64();
   f.static_stiffness_n_per_m = r.f64();

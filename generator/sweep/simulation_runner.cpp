@@ -67,6 +67,7 @@ CaseRunner simulation_case_runner(simulation::CaseOptions options) {
                                                                                              : "polynomial";
     f.span_m = r.towline.span_m;
     f.sag_m = r.towline.sag_m;
+    f.lowest_elevation_m = r.towline.lowest_elevation_m;
     f.end_angle_tug_rad = r.towline.tug_angle_rad;
     f.end_angle_tow_rad = r.towline.tow_angle_rad;
     f.static_stiffness_n_per_m = r.towline.static_stiffness_n_m;
@@ -104,6 +105,19 @@ CaseRunner simulation_case_runner(simulation::CaseOptions options) {
     out.days.reserve(r.days.size());
     for (const auto& d : r.days) out.days.push_back({d.max_dynamic_tension_n, d.slack_time_s, d.snatch_events});
     return out;
+  };
+}
+
+LowestPointFn static_lowest_elevation(simulation::CaseOptions options) {
+  options.validate();
+  return [options](const CaseSpec& spec, const io::ShipCatalog& catalog) {
+    const model::Vessel& tug = catalog.vessel(spec.tug).vessel;
+    const model::Vessel& tow = catalog.vessel(spec.tow).vessel;
+    const towline::Catenary cat =
+        towline::Catenary::solve(catalog.towline(tug, spec.line, spec.length_m()),
+                                 towline::TowPoints{tug.tow_point.z_m, tow.tow_point.z_m}, spec.mean_tension_n(),
+                                 options.towline.catenary);
+    return cat.lowest_elevation_m();
   };
 }
 

@@ -26,6 +26,11 @@ sea::SeaState sea_state(const SeaSpec& sea, double heading_deg);
 // cases run in parallel, so options.num_threads should be 1.
 CaseRunner simulation_case_runner(simulation::CaseOptions options);
 
+// The lowest point of the static catenary simulation_case_runner's fit of the
+// same case stores (towline EQ-TOWLINE-1, same solver options): for fits
+// written before schema 6.
+LowestPointFn static_lowest_elevation(simulation::CaseOptions options);
+
 // R_S = 2 int R_aw/zeta^2 S dw of the tow (seakeeping EQ-AR-2), summed over
 // the wave systems, on the case grid of `options` (responses shared with the
 // cases through simulation::cached_responses).

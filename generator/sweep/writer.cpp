@@ -331,8 +331,8 @@ void DatabaseWriter::write_result(std::int64_t case_id, const CaseSpec& spec, co
             "towline_model, span_ft, sag_ft, end_angle_tug_deg, end_angle_tow_deg, static_stiffness_lbf_per_ft, "
             "breaking_strength_lbf, a10_lbf_per_ft, a01_lbf_s_per_ft, a20_lbf_per_ft2, a11_lbf_s_per_ft2, "
             "a02_lbf_s2_per_ft2, a30_lbf_per_ft3, a21_lbf_s_per_ft3, a12_lbf_s2_per_ft3, a03_lbf_s3_per_ft3, "
-            "fit_rms_lbf, fit_max_error_lbf, fit_samples) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
-            "?, ?, ?, ?, ?, ?, ?, ?, ?)");
+            "fit_rms_lbf, fit_max_error_lbf, fit_samples, lowest_elevation_ft) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, "
+            "?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
         st.bind(1, keys.fit_id)
             .bind(2, keys.fit_key)
             .bind(3, spec.tug)
@@ -351,6 +351,7 @@ void DatabaseWriter::write_result(std::int64_t case_id, const CaseSpec& spec, co
                                               kCoefficientLengthPower[c]));
         }
         st.bind(23, n_to_lbf(f.fit_rms_n)).bind(24, n_to_lbf(f.fit_max_error_n)).bind(25, f.fit_samples);
+        st.bind(26, m_to_ft(f.lowest_elevation_m));
         st.run();
       }
     }
@@ -433,6 +434,26 @@ void DatabaseWriter::write_failure(std::int64_t case_id, const std::string& mess
         .bind(3, utc_now())
         .bind(4, case_id);
     st.run();
+  });
+}
+
+std::vector<FitWithoutLowestPoint> DatabaseWriter::fits_without_lowest_point() {
+  std::vector<FitWithoutLowestPoint> out;
+  store::Statement st = db_.prepare(
+      "SELECT f.fit_id, c.case_id FROM towline_fits f JOIN cases c ON c.fit_id = f.fit_id "
+      "WHERE f.lowest_elevation_ft IS NULL AND c.status = 'done' ORDER BY f.fit_id, c.case_id");
+  while (st.step()) out.push_back({st.column_int(0), st.column_int(1)});
+  return out;
+}
+
+void DatabaseWriter::set_lowest_points(const std::vector<std::pair<std::int64_t, double>>& fit_id_elevation_m) {
+  db_.transaction([&] {
+    store::Statement st = db_.prepare("UPDATE towline_fits SET lowest_elevation_ft = ? WHERE fit_id = ?");
+    for (const auto& [fit_id, elevation_m] : fit_id_elevation_m) {
+      st.reset();
+      st.bind(1, units::m_to_ft(elevation_m)).bind(2, fit_id);
+      st.run();
+    }
   });
 }
 

@@ -54,6 +54,11 @@ struct RegisteredCase {
   CaseState state = CaseState::kNew;
 };
 
+struct FitWithoutLowestPoint {
+  std::int64_t fit_id = 0;
+  std::int64_t case_id = 0;  // a finished case that uses it
+};
+
 class DatabaseWriter {
  public:
   explicit DatabaseWriter(store::Database& db) : db_(db) {}
@@ -83,6 +88,12 @@ class DatabaseWriter {
                     double runtime_s, const std::string& code_version, std::int64_t build_id);
   // status 'failed' with the reason (never dropped).
   void write_failure(std::int64_t case_id, const std::string& message, std::int64_t build_id);
+
+  // Fits written before schema 6 have no lowest point (NULL
+  // lowest_elevation_ft): every finished case of such a fit, by fit_id.
+  std::vector<FitWithoutLowestPoint> fits_without_lowest_point();
+  // Stores the lowest points a build computed for them (one transaction).
+  void set_lowest_points(const std::vector<std::pair<std::int64_t, double>>& fit_id_elevation_m);
 
  private:
   std::int64_t register_vessel(const io::VesselFile& vf);

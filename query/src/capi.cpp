@@ -111,6 +111,7 @@ void to_result(const Answer& a, towdb_query_result* out) {
   out->calculated_mean_tension_lbf = a.calculated_mean_tension_lbf;
   out->mean_tension_factor = a.mean_tension_factor;
   out->catenary_sag_ft = a.catenary_sag_ft;
+  out->catenary_depth_ft = a.catenary_depth_ft;
   out->equivalent_wind_kt = a.equivalent_wind_kt;
 }
 

@@ -36,6 +36,7 @@ struct MeanPoint {
   double slack = 0.0, ci_level = 0.0, ci_low_kips = 0.0, ci_high_kips = 0.0;
   double bs_lbf = 0.0;
   double sag_ft = kNaN;  // static catenary's largest sag below the chord (NaN: no fit stored)
+  double lowest_ft = kNaN;  // its lowest point above the waterline (NaN: not stored)
   bool above_bs = false;
   std::vector<int> cases;  // indices into Group::cases
 };
@@ -226,7 +227,7 @@ Bracket make_bracket(const std::vector<double>& axis, double q, bool extrapolate
 struct NodeValue {
   double g_u, g_beta;  // in the interpolation space
   double u, beta;      // kips
-  double slack, ci_level, ci_low, ci_high, sag_ft;
+  double slack, ci_level, ci_low, ci_high, sag_ft, lowest_ft;
   double bs_min, bs_max, mean_lbf;
   bool above_bs, mean_extrapolated;
   int p0, p1;
@@ -287,6 +288,7 @@ NodeValue node_value(const Group& g, const Node& node, double mean_lbf, Space s,
     v.g_beta = beta_in(a, s);
     v.slack = a.slack;
     v.sag_ft = a.sag_ft;
+    v.lowest_ft = a.lowest_ft;
     v.ci_level = a.ci_level;
     v.ci_low = a.ci_low_kips;
     v.ci_high = a.ci_high_kips;
@@ -300,6 +302,7 @@ NodeValue node_value(const Group& g, const Node& node, double mean_lbf, Space s,
   v.u = v.beta = kNaN;
   v.slack = lerp(a.slack, b.slack);
   v.sag_ft = lerp(a.sag_ft, b.sag_ft);
+  v.lowest_ft = lerp(a.lowest_ft, b.lowest_ft);
   v.ci_level = a.ci_level;
   v.ci_low = lerp(a.ci_low_kips, b.ci_low_kips);
   v.ci_high = lerp(a.ci_high_kips, b.ci_high_kips);
@@ -335,7 +338,7 @@ struct Corner {
 };
 
 struct Evaluation {
-  double u = 0.0, beta = 0.0, mean_lbf = 0.0, slack = 0.0, sag_ft = 0.0;
+  double u = 0.0, beta = 0.0, mean_lbf = 0.0, slack = 0.0, sag_ft = 0.0, lowest_ft = 0.0;
   double calc_lbf = kNaN, factor = kNaN;  // EQ-QUERY-9 (NaN when the group is absolute)
   double ci_level = 0.0, ci_low = 0.0, ci_high = 0.0;
   double bs_min = 0.0, bs_max = 0.0;
@@ -421,7 +424,7 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
     c.value = node_value(g, node, m, s, extrapolate);
   }
   double gu = 0.0, gb = 0.0;
-  ev->mean_lbf = ev->slack = ev->sag_ft = ev->ci_low = ev->ci_high = 0.0;
+  ev->mean_lbf = ev->slack = ev->sag_ft = ev->lowest_ft = ev->ci_low = ev->ci_high = 0.0;
   ev->bs_min = std::numeric_limits<double>::infinity();
   ev->bs_max = 0.0;
   ev->above_bs = ev->mean_extrapolated = false;
@@ -436,6 +439,7 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
     ev->mean_lbf += c.weight * v.mean_lbf;
     ev->slack += c.weight * v.slack;
     ev->sag_ft += c.weight * v.sag_ft;
+    ev->lowest_ft += c.weight * v.lowest_ft;
     ev->ci_low += c.weight * v.ci_low;
     ev->ci_high += c.weight * v.ci_high;
     ev->ci_level = v.ci_level;
@@ -684,6 +688,7 @@ const StoredNumber kStoredNumbers[] = {
     {24, "cases.calculated_mean_tension_lbf", true, 0.0, kInf, true, true, false,
      "NULL or a finite mean tension > 0"},
     {25, "towline_fits.sag_ft", true, 0.0, kInf, false, true, false, "NULL or a finite sag >= 0"},
+    {26, "towline_fits.lowest_elevation_ft", true, -kInf, kInf, true, true, false, "NULL or a finite elevation"},
 };
 
 // dynamic_999 = u + beta (-ln(-ln 0.999)) (EQ-QUERY-3) as stored: the
@@ -749,7 +754,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
   struct Row {
     CaseRec rec;
     double folded_heading = 0.0, slack = 0.0, ci_level = 0.0, ci_low = 0.0, ci_high = 0.0, bs = 0.0;
-    double sag_ft = kNaN;
+    double sag_ft = kNaN, lowest_ft = kNaN;
     bool above = false;
   };
   std::vector<std::vector<Row>> rows;
@@ -760,7 +765,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
         "c.tp_s, c.gamma, c.swell_hs_ft, c.heading_deg, c.length_ft, c.mean_tension_lbf, c.days, "
         "r.gumbel_u_kips, r.gumbel_alpha_per_kip, r.dynamic_999_kips, r.ci_level, r.ci_low_kips, r.ci_high_kips, "
         "r.breaking_strength_lbf, r.above_breaking_strength, r.slack_fraction, c.calculated_mean_tension_lbf, "
-        "f.sag_ft FROM cases c JOIN results r ON r.case_id = c.case_id "
+        "f.sag_ft, f.lowest_elevation_ft FROM cases c JOIN results r ON r.case_id = c.case_id "
         "LEFT JOIN towline_fits f ON f.fit_id = c.fit_id WHERE c.status = 'done' ORDER BY c.case_id");
     while (st.step()) {
       Row r;
@@ -793,6 +798,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
       r.slack = st.column_double(23);
       r.rec.calc_lbf = st.column_optional_double(24).value_or(kNaN);
       r.sag_ft = st.column_optional_double(25).value_or(kNaN);
+      r.lowest_ft = st.column_optional_double(26).value_or(kNaN);
       r.rec.beta_kips = 1.0 / alpha;
       const auto key = std::make_tuple(tug, tow, line, (wind ? "wind:" : "hs:") + family);
       auto [it, inserted] = group_of.try_emplace(key, e.groups_.size());
@@ -873,7 +879,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
       for (MeanPoint& p : node.points) {
         const double n = static_cast<double>(p.cases.size());
         double u = 0, beta = 0, slack = 0, lo = 0, hi = 0, level = 0, bs = std::numeric_limits<double>::infinity();
-        double sag = 0;
+        double sag = 0, lowest = 0;
         bool above = false;
         for (int ci : p.cases) {
           const CaseRec& c = g.cases[ci];
@@ -883,6 +889,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
           const Row& r = rs[ci];
           slack += r.slack;
           sag += r.sag_ft;  // NaN when any case has no stored fit
+          lowest += r.lowest_ft;  // NaN also for fits stored before schema 6
           lo += r.ci_low;
           hi += r.ci_high;
           level = r.ci_level;
@@ -898,6 +905,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
         }
         p.slack = slack / n;
         p.sag_ft = sag / n;
+        p.lowest_ft = lowest / n;
         p.ci_low_kips = lo / n;
         p.ci_high_kips = hi / n;
         p.ci_level = level;
@@ -1223,6 +1231,7 @@ Answer Engine::answer(const Request& asked, const Request& r, const Group& g, do
   ans.mean_check_passed = ans.mean_tension_lbf <= ans.mean_limit_lbf;
   ans.slack_fraction = ev.slack;
   ans.catenary_sag_ft = ev.sag_ft;
+  ans.catenary_depth_ft = -ev.lowest_ft;
   ans.ci_level = ev.ci_level;
   ans.ci_low_kips = ev.ci_low;
   ans.ci_high_kips = ev.ci_high;

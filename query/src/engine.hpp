@@ -134,6 +134,7 @@ struct Answer {
   double uncertainty_kips = kNaN;
   double slack_fraction = kNaN;
   double catenary_sag_ft = kNaN;
+  double catenary_depth_ft = kNaN;  // lowest point below the waterline (negative: above it)
   // EQ-QUERY-10: the wind whose fully developed sea has the asked Hs, when the
   // question gave hs_ft and was answered from wind seas (NaN otherwise).
   double equivalent_wind_kt = kNaN;

@@ -86,6 +86,9 @@ def test_answer_and_charts(server, browser):  # browser-1
     assert browser.find_element(By.ID, "check-extreme").text.startswith("pass")
     assert browser.find_element(By.ID, "check-mean").text.startswith("pass")
     assert "T-ATF 166 towing FFG 7" in browser.find_element(By.ID, "answer-title").text
+    depth = cli["catenary_depth_ft"]
+    assert browser.find_element(By.ID, "depth").text == \
+        f"{abs(depth):.1f} ft {'below' if depth >= 0 else 'above'} the waterline"
     for chart in ("chart-speed", "chart-heading", "chart-length"):
         points = browser.execute_script(
             "const c = Chart.getChart(arguments[0]); return c ? c.data.datasets.reduce((n, d) => n + d.data.length, 0) : 0;",

@@ -2,7 +2,9 @@
 // `towdb mean-tension` (exit codes 0 ok, 1 failed cases, 2 bad input).
 // Test plan:
 //   cli-build-1  build --dry-run of the Table 5-3 grid: count line, 2880 = cases + 12 x skipped
-//   cli-build-2  a real two-case build through the simulation chain, 1 and 2 threads identical
+//   cli-build-2  a real two-case build through the simulation chain, 1 and 2 threads identical;
+//                the catenary's lowest point stored with each fit and, when missing (a fit
+//                of schema 5), filled by the next build with the same bits
 //   cli-build-3  a bad sweep file: exit 2 with file:line:key; an existing database is untouched
 //   cli-build-4  status of a built database (text and JSON); dry run against it (states, nothing
 //                written); missing and corrupt databases: 2
@@ -32,6 +34,30 @@ namespace towdb::test {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The first column of a SQL query's first row as text ("" if none).
+std::string query_text(const fs::path& path, const std::string& sql) {
+  sqlite3* db = nullptr;
+  std::string v;
+  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
+    sqlite3_stmt* st = nullptr;
+    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &st, nullptr) == SQLITE_OK && sqlite3_step(st) == SQLITE_ROW &&
+        sqlite3_column_text(st, 0) != nullptr) {
+      v = reinterpret_cast<const char*>(sqlite3_column_text(st, 0));
+    }
+    sqlite3_finalize(st);
+  }
+  sqlite3_close(db);
+  return v;
+}
+
+bool exec_sql(const fs::path& path, const std::string& sql) {
+  sqlite3* db = nullptr;
+  bool ok = sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK &&
+            sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK;
+  sqlite3_close(db);
+  return ok;
+}
 
 std::string last_line(const std::string& text) {
   std::string t = text;
@@ -119,6 +145,21 @@ mean_tension_lbf = 50000.0
   const auto last_field = [](const std::string& row) { return std::stod(row.substr(row.rfind(',') + 1)); };
   EXPECT_GT(last_field(wire), last_field(fiber)) << csv.out;
   EXPECT_GT(last_field(fiber), 0.0);
+  // Schema 6: each fit stores its catenary's lowest point; a fit stored
+  // without it (written before schema 6) gets the same bits from the next
+  // build of the sweep, which says so.
+  const std::string kLowest =
+      "SELECT group_concat(quote(lowest_elevation_ft), ' ') FROM (SELECT lowest_elevation_ft FROM towline_fits "
+      "ORDER BY fit_id)";
+  const std::string stored = query_text(db1, kLowest);
+  EXPECT_EQ(query_int(db1, "SELECT count(*) FROM towline_fits WHERE lowest_elevation_ft IS NOT NULL"), 2) << stored;
+  ASSERT_TRUE(exec_sql(db1, "UPDATE towline_fits SET lowest_elevation_ft = NULL"));
+  const CommandResult again = run_towdb("build --sweep '" + (dir / "real.toml").string() + "' --db '" +
+                                        db1.string() + "' --threads 1");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.out.find("0 scheduled"), std::string::npos) << again.out;
+  EXPECT_NE(again.out.find("the catenary's lowest point added to 2 towline fits"), std::string::npos) << again.out;
+  EXPECT_EQ(query_text(db1, kLowest), stored);
   fs::remove_all(dir);
 }
 

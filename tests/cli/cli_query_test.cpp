@@ -13,12 +13,15 @@
 //   cli-query-8  query --leave-one-out --json reports both spaces and the chosen one
 //   cli-query-9  --hs-ft on a wind-sea database: answered at the equivalent wind (text, JSON, CSV); a far
 //                --tp-s exits 2 naming both periods (EQ-QUERY-10)
+//   cli-query-10 the README's question on the bundled database: the catenary's lowest point in
+//                text (above or below the waterline), JSON and CSV (schema 6)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <iomanip>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -358,7 +361,7 @@ TEST_F(CliQuery, HsIsAnsweredThroughTheEquivalentWind) {  // cli-query-9
       << text.out;
   const CommandResult csv = run_towdb(sea + "--csv");
   ASSERT_EQ(csv.exit_code, 0) << csv.err;
-  EXPECT_NE(csv.out.find("uncertainty_kips,catenary_sag_ft,equivalent_wind_kt,"), std::string::npos) << csv.out;
+  EXPECT_NE(csv.out.find("uncertainty_kips,catenary_sag_ft,catenary_depth_ft,equivalent_wind_kt,"), std::string::npos) << csv.out;
   EXPECT_NE(csv.out.find(",25.00,0,"), std::string::npos) << csv.out;
   const CommandResult swell = run_towdb(sea + "--tp-s 14");
   EXPECT_EQ(swell.exit_code, 2);
@@ -368,4 +371,28 @@ TEST_F(CliQuery, HsIsAnsweredThroughTheEquivalentWind) {  // cli-query-9
 }
 
 }  // namespace
+TEST(CliQueryBundled, CatenaryLowestPointIsInEveryOutput) {  // cli-query-10
+  const std::string q = "query --db '" + (source_dir() / "db" / "towdb.sqlite").string() +
+                        "' --tug T-ATF --tow FFG7 --line fiber --speed-kt 7 --wind-kt 30 --heading-deg 150 "
+                        "--length-ft 1200 ";
+  const CommandResult j = run_towdb(q + "--json");
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  const double depth = json::parse(j.out).at("catenary_depth_ft").get<double>();
+  // A taut 1,200 ft fiber line at 67,000 lbf hangs between tow points 6-30 ft up: its lowest point
+  // lies within a few tens of feet of the waterline.
+  EXPECT_LT(std::abs(depth), 50.0);
+  const CommandResult text = run_towdb(q);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  std::ostringstream shown;
+  shown << std::fixed << std::setprecision(1) << std::abs(depth) << (depth >= 0.0 ? " below" : " above")
+        << " the waterline";
+  EXPECT_NE(text.out.find("catenary lowest point ft"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find(shown.str()), std::string::npos) << text.out;
+  const CommandResult csv = run_towdb(q + "--csv");
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  std::ostringstream cell;
+  cell << std::fixed << std::setprecision(1) << depth;
+  EXPECT_NE(csv.out.find("," + cell.str() + ","), std::string::npos) << csv.out;
+}
+
 }  // namespace towdb::test

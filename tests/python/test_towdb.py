@@ -54,7 +54,7 @@ def test_readme_question_matches_the_cli(db):  # python-1
     assert (a["tug"], a["tow"]) == ("T-ATF 166", "FFG 7")
     for key in ("dynamic_tension_kips", "dynamic_999_kips", "mean_tension_lbf", "calculated_mean_tension_lbf",
                 "extreme_tension_lbf", "breaking_strength_lbf", "uncertainty_kips", "interpolation_error_kips",
-                "slack_fraction", "catenary_sag_ft", "gumbel_u_kips", "gumbel_alpha_per_kip"):
+                "slack_fraction", "catenary_sag_ft", "catenary_depth_ft", "gumbel_u_kips", "gumbel_alpha_per_kip"):
         assert a[key] == j[key], key  # exact: the same library computes both
     extreme, mean = j["checks"]
     assert a["extreme_limit_lbf"] == extreme["limit_lbf"]
@@ -166,3 +166,4 @@ def test_inverse_searches(db):  # python-7
     assert m["found"] and m["at_value"]["extreme_check_passed"]
     assert m["searched_length_ft"][0] <= m["min_length_ft"] <= m["searched_length_ft"][1]
     assert math.isfinite(m["at_value"]["catenary_sag_ft"])
+    assert math.isfinite(m["at_value"]["catenary_depth_ft"])  # schema 6: every bundled fit has its lowest point

@@ -129,6 +129,10 @@ TEST_F(DatabaseLies, BadStoredValuesAreRefusedAndNamed) {  // query-lies-1
       {"UPDATE cases SET calculated_mean_tension_lbf = -1 WHERE case_id = 2",
        {"case 2", "cases.calculated_mean_tension_lbf = -1"}},
       {"UPDATE towline_fits SET sag_ft = -3 WHERE fit_id = 1", {"case 1", "towline_fits.sag_ft = -3"}},
+      {"UPDATE towline_fits SET lowest_elevation_ft = 'deep' WHERE fit_id = 1",
+       {"case 1", "towline_fits.lowest_elevation_ft = 'deep' (text)"}},
+      {"UPDATE towline_fits SET lowest_elevation_ft = -9e999 WHERE fit_id = 1",
+       {"case 1", "towline_fits.lowest_elevation_ft = -inf", "finite elevation"}},
   };
   for (const Lie& l : lies) {
     SCOPED_TRACE(l.sql);

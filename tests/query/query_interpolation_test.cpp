@@ -163,25 +163,44 @@ TEST_F(QueryTest, ReproducesEveryStoredCaseExactly) {
 }
 
 // query-interp-1b
-TEST_F(QueryTest, CatenarySagIsInterpolatedWithTheTensionsWeights) {
-  // EVIDENCE-OF: EQ-QUERY-6 (the sag of the stored towline fits, weighted as u and beta in linear
-  // space: exact for a sag multilinear in the axes and linear in the mean tension; NaN without fits)
+TEST_F(QueryTest, CatenarySagAndDepthAreInterpolatedWithTheTensionsWeights) {
+  // EVIDENCE-OF: EQ-QUERY-6 (the sag and the lowest point of the stored towline fits, weighted as
+  // u and beta in linear space: exact for values multilinear in the axes and linear in the mean
+  // tension; the depth is minus the stored elevation; NaN without fits or before schema 6)
   const GridSpec g = multilinear_grid();
   // Positive at every node (>= 23 ft): a stored sag below 0 is refused on open (a catenary hangs below its chord).
   auto sag = [](double s, double w, double h, double l, double m) {
     return 30.0 + 0.02 * l - 2e-4 * m + 0.1 * s + 0.01 * w * l / 1000.0 + 0.001 * h;
   };
+  // Elevation of the lowest point: above the water for short taut lines, below it for long ones.
+  auto elevation = [](double s, double w, double h, double l, double m) {
+    return 40.0 - 0.03 * l + 1e-4 * m - 0.2 * s - 0.05 * w + 0.002 * h;
+  };
   std::vector<SyntheticCase> cases = grid_cases(g);
   const std::string without = write(cases, "no-fits.towdb");
   for (SyntheticCase& c : cases) c.sag_ft = sag(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf);
+  const std::string before_6 = write(cases, "fits-without-lowest-point.towdb");
+  for (SyntheticCase& c : cases) {
+    c.lowest_elevation_ft = elevation(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf);
+  }
   Database db(write(cases, "fits.towdb"), TOWDB_QUERY_SPACE_LOG);
+  int above_water = 0, below_water = 0;
   std::mt19937 rng(2026);
   for (int i = 0; i < 100; ++i) {
     const auto [s, w, h, l, m] = random_point(rng, g);
     const QueryResult r = db.query(request(s, w, h, l, m));
     EXPECT_REL_CLOSE(r.values.catenary_sag_ft, sag(s, w, h, l, m), kRoundOffRelTol) << s << " " << w << " " << h;
+    const double depth = -elevation(s, w, h, l, m);
+    EXPECT_NEAR(r.values.catenary_depth_ft, depth, kRoundOffRelTol * std::max(1.0, std::abs(depth)));
+    (depth < 0.0 ? above_water : below_water) += 1;
   }
+  EXPECT_GT(above_water, 0);  // the test covers both signs
+  EXPECT_GT(below_water, 0);
   const SyntheticCase& c = cases.front();
+  const QueryResult old = Database(before_6, TOWDB_QUERY_SPACE_LOG)
+                              .query(request(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf));
+  EXPECT_TRUE(std::isfinite(old.values.catenary_sag_ft));
+  EXPECT_TRUE(std::isnan(old.values.catenary_depth_ft));
   EXPECT_TRUE(std::isnan(Database(without, TOWDB_QUERY_SPACE_LOG)
                              .query(request(c.speed_kt, c.wind_kt, c.heading_deg, c.length_ft, c.mean_tension_lbf))
                              .values.catenary_sag_ft));

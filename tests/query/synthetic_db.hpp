@@ -33,6 +33,7 @@ struct SyntheticCase {
   double breaking_strength_lbf = 360000.0;
   double slack_fraction = 0.0;
   double sag_ft = kNoValue;  // NaN: no towline_fits row (fit_id NULL)
+  double lowest_elevation_ft = kNoValue;  // NaN: NULL (a fit stored before schema 6)
   std::string status = "done";
 };
 
@@ -51,13 +52,14 @@ inline void write_synthetic_db(const std::filesystem::path& path, const std::vec
         "daily_max_variance_kips2, dynamic_999_kips, dynamic_99_kips, ci_level, ci_low_kips, ci_high_kips, "
         "max_daily_max_kips, breaking_strength_lbf, above_breaking_strength, slack_fraction, snatch_events_per_day, "
         "runtime_s, code_version) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17)");
-    // A fit row carries only what the query reads (the sag); the rest is 0.
+    // A fit row carries only what the query reads (sag, lowest point); the rest is 0.
     auto ins_fit = db.prepare(
         "INSERT INTO towline_fits (fit_key, tug_name, line_type, length_ft, mean_tension_lbf, towline_model, span_ft, "
         "sag_ft, end_angle_tug_deg, end_angle_tow_deg, static_stiffness_lbf_per_ft, breaking_strength_lbf, "
         "a10_lbf_per_ft, a01_lbf_s_per_ft, a20_lbf_per_ft2, a11_lbf_s_per_ft2, a02_lbf_s2_per_ft2, a30_lbf_per_ft3, "
-        "a21_lbf_s_per_ft3, a12_lbf_s2_per_ft3, a03_lbf_s3_per_ft3, fit_rms_lbf, fit_max_error_lbf, fit_samples) "
-        "VALUES (?1, ?2, ?3, ?4, ?5, 'test', 0, ?6, 0, 0, 0, ?7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0)");
+        "a21_lbf_s_per_ft3, a12_lbf_s2_per_ft3, a03_lbf_s3_per_ft3, fit_rms_lbf, fit_max_error_lbf, fit_samples, "
+        "lowest_elevation_ft) VALUES (?1, ?2, ?3, ?4, ?5, 'test', 0, ?6, 0, 0, 0, ?7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, "
+        "0, ?8)");
     auto set_fit = db.prepare("UPDATE cases SET fit_id = ?1 WHERE case_id = ?2");
     int k = 0;
     for (const SyntheticCase& c : cases) {
@@ -95,7 +97,8 @@ inline void write_synthetic_db(const std::filesystem::path& path, const std::vec
             .bind(4, c.length_ft)
             .bind(5, c.mean_tension_lbf)
             .bind(6, c.sag_ft)
-            .bind(7, c.breaking_strength_lbf);
+            .bind(7, c.breaking_strength_lbf)
+            .bind(8, opt(c.lowest_elevation_ft));
         ins_fit.run();
         set_fit.bind(1, db.last_insert_rowid()).bind(2, id);
         set_fit.run();

@@ -49,12 +49,20 @@ inline TestRunnerOptions sleeping(int ms) {
   return o;
 }
 
+// Submerged weight per length of the closed-form outcome's line [N/m].
+inline constexpr double kTestLineWeightNPerM = 100.0;
+
 inline sweep::CaseOutcome closed_form_outcome(const sweep::CaseSpec& spec, const io::ShipCatalog& catalog) {
   const model::Vessel& tug = catalog.vessel(spec.tug).vessel;
   const model::Towline line = catalog.towline(tug, spec.line, spec.length_m());
   sweep::CaseOutcome o;
   const double k_n_per_m = 1.0 / line.axial_compliance_m_per_n();
   o.fit.span_m = line.total_length_m();
+  // A shallow parabola of a 100 N/m line hanging between the two tow points
+  // (sag = w X^2 / (8 H)): known values for the query's sag and depth tests.
+  o.fit.sag_m = kTestLineWeightNPerM * o.fit.span_m * o.fit.span_m / (8.0 * spec.mean_tension_n());
+  o.fit.lowest_elevation_m =
+      0.5 * (tug.tow_point.z_m + catalog.vessel(spec.tow).vessel.tow_point.z_m) - o.fit.sag_m;
   o.fit.static_stiffness_n_per_m = k_n_per_m;
   o.fit.breaking_strength_n = line.breaking_strength_n();
   o.fit.coefficients_si[0] = k_n_per_m;

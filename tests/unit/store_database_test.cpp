@@ -155,8 +155,8 @@ TEST_F(StoreTest, FailedTransactionLeavesNothing) {
 }
 
 // A database of schema version 3 (daily_maxima, one row per day), made from a
-// new one by undoing migrations 5 and 4 as 001_initial.sql, 004_case_days.sql
-// and 005_coverage_notes.sql define them.
+// new one by undoing migrations 6, 5 and 4 as 001_initial.sql, 004_case_days.sql,
+// 005_coverage_notes.sql and 006_catenary_lowest_point.sql define them.
 void make_version_3(const std::filesystem::path& path) {
   { Database db = Database::open(path, Database::Mode::kCreate); }
   sqlite3* raw = nullptr;
@@ -164,6 +164,7 @@ void make_version_3(const std::filesystem::path& path) {
   const char* sql =
       "DROP TABLE case_days;"
       "DROP TABLE coverage_notes;"  // migration 5 adds it again
+      "ALTER TABLE towline_fits DROP COLUMN lowest_elevation_ft;"  // migration 6 adds it again
       "CREATE TABLE daily_maxima (case_id INTEGER NOT NULL REFERENCES cases (case_id) ON DELETE CASCADE,"
       " day INTEGER NOT NULL CHECK (day >= 0), max_dynamic_kips REAL NOT NULL, slack_time_s REAL NOT NULL,"
       " snatch_events INTEGER NOT NULL, PRIMARY KEY (case_id, day)) WITHOUT ROWID;"

@@ -24,6 +24,9 @@
 //                  nothing to compute is not
 //   sweep-build-13 the sweep's coverage notes and skipped conditions are stored (schema 5
 //                  coverage_notes); the next build of the same sweep file replaces them
+//   sweep-build-14 schema 6: each fit stores the runner's lowest point (ft); fits stored without
+//                  it are filled by the next build from an up-to-date case, once; fits of
+//                  cases outside the sweep stay NULL
 #include <sqlite3.h>
 #include <sys/file.h>
 #include <fcntl.h>
@@ -441,5 +444,61 @@ TEST(SweepBuild, CoverageNotesAreStoredAndReplaced) {  // sweep-build-13
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM coverage_notes WHERE build_id = (SELECT max(build_id) FROM builds)"),
             1);
 }
+
+TEST(SweepBuild, LowestPointIsStoredAndFilledForOlderFits) {  // sweep-build-14
+  Fixture f;
+  const fs::path db = f.dir / "lowest.db";
+  f.build(db, 1, make_test_runner());
+  const std::int64_t fits = query_int(db, "SELECT count(*) FROM towline_fits");
+  ASSERT_GT(fits, 2);
+  // Every case's fit holds the runner's value in ft (case_id = sweep order, EQ-SWEEP-7).
+  for (std::size_t i = 0; i < f.cases.size(); ++i) {
+    const double expected_ft = units::m_to_ft(closed_form_outcome(f.cases[i], f.catalog).fit.lowest_elevation_m);
+    store::Database d = store::Database::open(db, store::Database::Mode::kReadOnly);
+    store::Statement st = d.prepare(
+        "SELECT f.lowest_elevation_ft FROM cases c JOIN towline_fits f ON f.fit_id = c.fit_id WHERE c.case_id = ?");
+    st.bind(1, static_cast<std::int64_t>(i + 1));
+    ASSERT_TRUE(st.step()) << i;
+    EXPECT_EQ(st.column_double(0), expected_ft) << i;
+    EXPECT_LT(expected_ft, 0.0) << i;  // a 100 N/m line sags below the water
+  }
+  // A database written before schema 6: NULL everywhere. The next build fills every fit of the
+  // sweep with the LowestPointFn's value, once; cases outside the sweep keep NULL.
+  {
+    store::Database d = store::Database::open(db, store::Database::Mode::kReadWrite);
+    d.exec("UPDATE towline_fits SET lowest_elevation_ft = NULL");
+  }
+  sweep::BuildOptions o;
+  int calls = 0;
+  o.lowest_elevation_m = [&calls](const sweep::CaseSpec& spec, const io::ShipCatalog&) {
+    ++calls;
+    return -units::ft_to_m(spec.length_ft / 100.0);
+  };
+  const sweep::BuildSummary s = f.build(db, 1, make_test_runner(), o);
+  EXPECT_EQ(s.scheduled, 0);
+  EXPECT_EQ(s.lowest_points_filled, fits);
+  EXPECT_EQ(calls, fits);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM towline_fits WHERE abs(lowest_elevation_ft + length_ft / 100.0) "
+                          "< 1e-9"),
+            fits);
+  EXPECT_EQ(f.build(db, 1, make_test_runner(), o).lowest_points_filled, 0);
+  EXPECT_EQ(calls, fits);
+  // A sweep with one of the cases only: the other fits stay NULL.
+  {
+    store::Database d = store::Database::open(db, store::Database::Mode::kReadWrite);
+    d.exec("UPDATE towline_fits SET lowest_elevation_ft = NULL");
+  }
+  Fixture one;
+  one.cases.resize(1);
+  const sweep::BuildSummary s1 = sweep::run_build(db, f.file, one.cases, f.catalog, make_test_runner(), [&] {
+    sweep::BuildOptions b = o;
+    b.threads = 1;
+    b.progress = false;
+    return b;
+  }());
+  EXPECT_EQ(s1.lowest_points_filled, 1);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM towline_fits WHERE lowest_elevation_ft IS NULL"), fits - 1);
+}
+
 }  // namespace
 }  // namespace towdb::test

@@ -229,6 +229,11 @@ typedef struct towdb_query_result {
                                          says whether the line reaches the bottom); NaN when not stored */
   double equivalent_wind_kt;          /* EQ-QUERY-10: the wind of the fully developed sea with the asked
                                          hs_ft, when the database holds wind seas only; NaN otherwise */
+  double catenary_depth_ft;           /* depth of the static catenary's lowest point below the still waterline
+                                         [ft], interpolated as catenary_sag_ft (compare with the water depth:
+                                         the line drags on the bottom where it is deeper); negative when the
+                                         whole line hangs above the water; NaN when not stored (fits written
+                                         before schema 6 and not yet refreshed by a build) */
 } towdb_query_result;
 
 /* One stored case near the query, with its own values. */
