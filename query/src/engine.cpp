@@ -34,6 +34,7 @@ struct MeanPoint {
   double u_kips = 0.0, beta_kips = 0.0;
   double ln_u = 0.0, ln_beta = 0.0;  // precomputed for log space (NaN when u <= 0)
   double slack = 0.0, ci_level = 0.0, ci_low_kips = 0.0, ci_high_kips = 0.0;
+  double ln_ci_low = 0.0, ln_ci_high = 0.0;  // for log space (NaN when a bound is <= 0)
   double bs_lbf = 0.0;
   double sag_ft = kNaN;  // static catenary's largest sag below the chord (NaN: no fit stored)
   double lowest_ft = kNaN;  // its lowest point above the waterline (NaN: not stored)
@@ -226,6 +227,7 @@ Bracket make_bracket(const std::vector<double>& axis, double q, bool extrapolate
 // node_value() value-initialises the one it fills.
 struct NodeValue {
   double g_u, g_beta;  // in the interpolation space
+  double g_ci_low, g_ci_high;  // the stored interval's bounds, in the same space
   double u, beta;      // kips
   double slack, ci_level, ci_low, ci_high, sag_ft, lowest_ft;
   double bs_min, bs_max, mean_lbf;
@@ -292,6 +294,8 @@ NodeValue node_value(const Group& g, const Node& node, double mean_lbf, Space s,
     v.ci_level = a.ci_level;
     v.ci_low = a.ci_low_kips;
     v.ci_high = a.ci_high_kips;
+    v.g_ci_low = s == Space::kLog ? a.ln_ci_low : a.ci_low_kips;
+    v.g_ci_high = s == Space::kLog ? a.ln_ci_high : a.ci_high_kips;
     return v;
   }
   const double t = v.t;
@@ -306,6 +310,8 @@ NodeValue node_value(const Group& g, const Node& node, double mean_lbf, Space s,
   v.ci_level = a.ci_level;
   v.ci_low = lerp(a.ci_low_kips, b.ci_low_kips);
   v.ci_high = lerp(a.ci_high_kips, b.ci_high_kips);
+  v.g_ci_low = s == Space::kLog ? lerp(a.ln_ci_low, b.ln_ci_low) : v.ci_low;
+  v.g_ci_high = s == Space::kLog ? lerp(a.ln_ci_high, b.ln_ci_high) : v.ci_high;
   return v;
 }
 
@@ -423,7 +429,7 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
     const double m = g.relative ? ev->factor * node.calc_lbf : target.mean_lbf;
     c.value = node_value(g, node, m, s, extrapolate);
   }
-  double gu = 0.0, gb = 0.0;
+  double gu = 0.0, gb = 0.0, g_lo = 0.0, g_hi = 0.0;
   ev->mean_lbf = ev->slack = ev->sag_ft = ev->lowest_ft = ev->ci_low = ev->ci_high = 0.0;
   ev->bs_min = std::numeric_limits<double>::infinity();
   ev->bs_max = 0.0;
@@ -442,6 +448,8 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
     ev->lowest_ft += c.weight * v.lowest_ft;
     ev->ci_low += c.weight * v.ci_low;
     ev->ci_high += c.weight * v.ci_high;
+    g_lo += c.weight * v.g_ci_low;
+    g_hi += c.weight * v.g_ci_high;
     ev->ci_level = v.ci_level;
     ev->bs_min = std::min(ev->bs_min, v.bs_min);
     ev->bs_max = std::max(ev->bs_max, v.bs_max);
@@ -457,6 +465,14 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
   } else {
     ev->u = from_space(gu, s);
     ev->beta = from_space(gb, s);
+    // The stored interval in the answer's space, so that it brackets the
+    // answer as the corners' intervals bracket theirs (linear where a bound
+    // is not positive).
+    const double lo = from_space(g_lo, s), hi = from_space(g_hi, s);
+    if (std::isfinite(lo) && std::isfinite(hi)) {
+      ev->ci_low = lo;
+      ev->ci_high = hi;
+    }
   }
   if (!(std::isfinite(ev->u) && std::isfinite(ev->beta) && ev->beta > 0.0)) {
     throw NumericalError("interpolation in " + g.name() + " gives Gumbel u = " + format_value(ev->u) +
@@ -908,6 +924,8 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
         p.lowest_ft = lowest / n;
         p.ci_low_kips = lo / n;
         p.ci_high_kips = hi / n;
+        p.ln_ci_low = p.ci_low_kips > 0.0 ? std::log(p.ci_low_kips) : kNaN;
+        p.ln_ci_high = p.ci_high_kips > 0.0 ? std::log(p.ci_high_kips) : kNaN;
         p.ci_level = level;
         p.bs_lbf = bs;
         p.above_bs = above;

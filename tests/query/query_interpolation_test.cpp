@@ -5,6 +5,7 @@
 //   query-interp-1  every stored case is reproduced exactly (linear and log space)
 //   query-interp-2  a multilinear function is reproduced exactly anywhere in the grid (linear space)
 //   query-interp-3  an exp(multilinear) function is reproduced exactly in log space; auto picks log
+//   query-interp-3b the stored interval is interpolated in the answer's space (brackets the answer)
 //   query-interp-4  heading folding: h and 360 - h give identical answers
 //   query-interp-5  D-day and any-probability quantiles satisfy F(x)^D = 1 - p
 //   query-interp-6  thesis Appendix A check value (mean 41.06, variance 10.80 -> 57.27 kips)
@@ -247,6 +248,35 @@ TEST_F(QueryTest, ExponentialFunctionIsExactInLogSpaceAndAutoChoosesLog) {
   // The same data with multilinear parameters: auto keeps linear space.
   Database lin(write(grid_cases(multilinear_grid()), "lin.towdb"));
   EXPECT_EQ(lin.space(), TOWDB_QUERY_SPACE_LINEAR);
+}
+
+// query-interp-3b
+TEST_F(QueryTest, StoredIntervalIsInterpolatedInTheAnswersSpace) {
+  // EVIDENCE-OF: EQ-QUERY-6 (the stored interval's bounds in the same space as u and beta).
+  // Parameters that change by a factor of 7 across the grid, each case's interval +/-5 % of its
+  // dynamic_999: in log space the answer is a geometric mean of the corners and the interval
+  // is too, so it brackets the answer (a linear mean of the bounds lay up to 60 % above it).
+  GridSpec g;
+  g.u_kips = [](double s, double w, double h, double l, double m) {
+    return 40.0 * std::exp(0.1 * s + 0.02 * w - 0.0015 * l + 0.004 * h + 5e-6 * m);
+  };
+  g.beta_kips = [](double s, double w, double h, double l, double m) {
+    return 8.0 * std::exp(0.1 * s + 0.02 * w - 0.0015 * l + 0.004 * h + 5e-6 * m);
+  };
+  Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LOG);
+  std::mt19937 rng(31);
+  for (int i = 0; i < 200; ++i) {
+    const auto [s, w, h, l, m] = random_point(rng, g);
+    const towdb_query_result v = db.query(request(s, w, h, l, m)).values;
+    // u and beta share their exponent: x999 is exp(multilinear), the bounds exactly 0.95 and 1.05 of it.
+    EXPECT_REL_CLOSE(v.ci_low_kips, 0.95 * v.dynamic_999_kips, kRoundOffRelTol) << s << " " << l << " " << h;
+    EXPECT_REL_CLOSE(v.ci_high_kips, 1.05 * v.dynamic_999_kips, kRoundOffRelTol) << s << " " << l << " " << h;
+  }
+  // Linear space keeps the linear mean of the bounds, as it does for u and beta.
+  Database lin(write(grid_cases(multilinear_grid()), "lin.towdb"), TOWDB_QUERY_SPACE_LINEAR);
+  const towdb_query_result v = lin.query(request(6.0, 25.0, 37.0, 1200.0, 60000.0)).values;
+  EXPECT_REL_CLOSE(v.ci_low_kips, 0.95 * v.dynamic_999_kips, kRoundOffRelTol);
+  EXPECT_REL_CLOSE(v.ci_high_kips, 1.05 * v.dynamic_999_kips, kRoundOffRelTol);
 }
 
 // query-interp-4

@@ -37,7 +37,10 @@
  *             f T_calc,c on the relative axis of EQ-QUERY-9).
  *             Interpolated quantities: g = u and g = beta, either as
  *               linear space: g = sum_c w_c g_c, or
- *               log space:    g = exp(sum_c w_c ln g_c).
+ *               log space:    g = exp(sum_c w_c ln g_c);
+ *             the stored confidence interval's bounds in the same space (in
+ *             log space linear where a bound is <= 0), so that it brackets
+ *             the answer as the corners' intervals bracket theirs.
  *             The space is chosen when the database is opened, by the
  *             leave-one-out test of EQ-QUERY-8 (smaller 90th-percentile error
  *             wins; linear on a tie, and linear whenever some stored u <= 0).
