@@ -59,6 +59,7 @@ void add_validate_command(CLI::App& app, Context& ctx);  // thesis Appendix C co
 void add_audit_command(CLI::App& app, Context& ctx);     // database answers vs direct simulation
 void add_plan_command(CLI::App& app, Context& ctx);      // pictures for a tow plan (gnuplot PNGs)
 void add_serve_command(CLI::App& app, Context& ctx);     // the planner web page and JSON API
+void add_refine_command(CLI::App& app, Context& ctx);    // error-estimate-driven grid nodes
 
 }  // namespace towdb::cli
 

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   towdb::cli::add_validate_command(app, ctx);
   towdb::cli::add_audit_command(app, ctx);
   towdb::cli::add_plan_command(app, ctx);
+  towdb::cli::add_refine_command(app, ctx);
   towdb::cli::add_serve_command(app, ctx);
 
   try {
