@@ -762,76 +762,193 @@ void check_stored_row(const store::Statement& st, const std::filesystem::path& p
 
 }  // namespace
 
+namespace {
+
+// One finished case as Engine::open reads it: the interpolated record and the
+// per-case extras that are averaged into its node's mean point.
+struct Row {
+  CaseRec rec;
+  double folded_heading = 0.0, slack = 0.0, ci_level = 0.0, ci_low = 0.0, ci_high = 0.0, bs = 0.0;
+  double sag_ft = kNaN, lowest_ft = kNaN;
+  bool above = false;
+};
+
+// The finished cases of a database, checked row by row (check_stored_row),
+// grouped by (tug, tow, line, sea family); rows[i] are groups[i]'s.
+struct LoadedRows {
+  std::vector<Group> groups;
+  std::vector<std::vector<Row>> rows;
+};
+
+void read_rows(store::Database& db, const std::filesystem::path& path, LoadedRows* out) {
+  std::map<std::tuple<std::string, std::string, std::string, std::string>, std::size_t> group_of;
+  store::Statement st = db.prepare(
+      "SELECT c.case_id, c.tug_name, c.tow_name, c.line_type, c.speed_kt, c.spectrum, c.wind_kt, c.hs_ft, "
+      "c.tp_s, c.gamma, c.swell_hs_ft, c.heading_deg, c.length_ft, c.mean_tension_lbf, c.days, "
+      "r.gumbel_u_kips, r.gumbel_alpha_per_kip, r.dynamic_999_kips, r.ci_level, r.ci_low_kips, r.ci_high_kips, "
+      "r.breaking_strength_lbf, r.above_breaking_strength, r.slack_fraction, c.calculated_mean_tension_lbf, "
+      "f.sag_ft, f.lowest_elevation_ft FROM cases c JOIN results r ON r.case_id = c.case_id "
+      "LEFT JOIN towline_fits f ON f.fit_id = c.fit_id WHERE c.status = 'done' ORDER BY c.case_id");
+  while (st.step()) {
+    Row r;
+    r.rec.id = st.column_int(0);
+    const std::string tug = st.column_text(1), tow = st.column_text(2), line = st.column_text(3);
+    r.rec.speed_kt = st.column_double(4);
+    std::string family = st.column_text(5);
+    const auto wind = st.column_optional_double(6), hs = st.column_optional_double(7);
+    const auto tp = st.column_optional_double(8), gamma = st.column_optional_double(9);
+    if (!st.is_null(10) || family.find("+swell") != std::string::npos) continue;  // swell seas: not gridded
+    check_stored_row(st, path);
+    if (wind.has_value() == hs.has_value()) continue;                             // not one sea parameter
+    r.rec.wind_kt = wind.value_or(kNaN);
+    r.rec.hs_ft = hs.value_or(kNaN);
+    r.rec.tp_s = hs ? tp.value_or(0.0) : kNaN;
+    if (gamma) family += "(gamma=" + format_value(*gamma) + ")";
+    r.rec.heading_deg = st.column_double(11);
+    r.folded_heading = fold_heading_deg(r.rec.heading_deg);
+    r.rec.length_ft = st.column_double(12);
+    r.rec.mean_lbf = st.column_double(13);
+    r.rec.days = static_cast<int>(st.column_int(14));
+    r.rec.u_kips = st.column_double(15);
+    const double alpha = st.column_double(16);
+    r.rec.dynamic_999_kips = st.column_double(17);
+    r.ci_level = st.column_double(18);
+    r.ci_low = st.column_double(19);
+    r.ci_high = st.column_double(20);
+    r.bs = st.column_double(21);
+    r.above = st.column_int(22) != 0;
+    r.slack = st.column_double(23);
+    r.rec.calc_lbf = st.column_optional_double(24).value_or(kNaN);
+    r.sag_ft = st.column_optional_double(25).value_or(kNaN);
+    r.lowest_ft = st.column_optional_double(26).value_or(kNaN);
+    r.rec.beta_kips = 1.0 / alpha;
+    const auto key = std::make_tuple(tug, tow, line, (wind ? "wind:" : "hs:") + family);
+    auto [it, inserted] = group_of.try_emplace(key, out->groups.size());
+    if (inserted) {
+      Group g;
+      g.tug = tug;
+      g.tow = tow;
+      g.line = line;
+      g.family = family;
+      g.wind_sea = wind.has_value();
+      g.tug_key = normalise_name(tug);
+      g.tow_key = normalise_name(tow);
+      out->groups.push_back(std::move(g));
+      out->rows.emplace_back();
+    }
+    out->rows[it->second].push_back(r);
+  }
+}
+
+// A group's grid: each axis the sorted distinct stored values, the nodes
+// (one per stored combination) and each node's mean points with their cases.
+void build_grid(Group& g, const std::vector<Row>& rs) {
+  std::array<std::vector<double>, kGridAxes> raw;
+  for (const Row& r : rs) {
+    raw[kSpeed].push_back(r.rec.speed_kt);
+    raw[kSea].push_back(g.wind_sea ? r.rec.wind_kt : r.rec.hs_ft);
+    raw[kPeriod].push_back(g.wind_sea ? 0.0 : r.rec.tp_s);
+    raw[kHeading].push_back(r.folded_heading);
+    raw[kLength].push_back(r.rec.length_ft);
+  }
+  std::size_t total = 1;
+  for (int a = kGridAxes - 1; a >= 0; --a) {
+    g.axis[a] = unique_sorted(raw[a]);
+    g.stride[a] = total;
+    total *= g.axis[a].size();
+  }
+  g.node_at.assign(total, -1);
+  for (const Row& r : rs) {
+    std::array<int, kGridAxes> idx{};
+    idx[kSpeed] = find_value(g.axis[kSpeed], r.rec.speed_kt);
+    idx[kSea] = find_value(g.axis[kSea], g.wind_sea ? r.rec.wind_kt : r.rec.hs_ft);
+    idx[kPeriod] = find_value(g.axis[kPeriod], g.wind_sea ? 0.0 : r.rec.tp_s);
+    idx[kHeading] = find_value(g.axis[kHeading], r.folded_heading);
+    idx[kLength] = find_value(g.axis[kLength], r.rec.length_ft);
+    int node = g.node_index(idx);
+    if (node < 0) {
+      node = static_cast<int>(g.nodes.size());
+      std::size_t flat = 0;
+      for (int a = 0; a < kGridAxes; ++a) flat += static_cast<std::size_t>(idx[a]) * g.stride[a];
+      g.node_at[flat] = node;
+      g.nodes.push_back(Node{idx, {}});
+    }
+    const int case_index = static_cast<int>(g.cases.size());
+    g.cases.push_back(r.rec);
+    auto& pts = g.nodes[node].points;
+    auto same = std::find_if(pts.begin(), pts.end(), [&](const MeanPoint& p) { return same_value(p.mean_lbf, r.rec.mean_lbf); });
+    if (same == pts.end()) {
+      MeanPoint p;
+      p.mean_lbf = r.rec.mean_lbf;
+      pts.push_back(p);
+      same = pts.end() - 1;
+    }
+    same->cases.push_back(case_index);
+  }
+}
+
+// Each mean point's parameters: the average of its cases (duplicates such as
+// headings h and 360 - h merged), logs precomputed; *log_ok becomes false when
+// some u <= 0. Mean points sorted by mean tension.
+void merge_points(Group& g, const std::vector<Row>& rs, bool* log_ok) {
+  // Merge duplicates (e.g. headings h and 360 - h): average of the parameters.
+  for (Node& node : g.nodes) {
+    for (MeanPoint& p : node.points) {
+      const double n = static_cast<double>(p.cases.size());
+      double u = 0, beta = 0, slack = 0, lo = 0, hi = 0, level = 0, bs = std::numeric_limits<double>::infinity();
+      double sag = 0, lowest = 0;
+      bool above = false;
+      for (int ci : p.cases) {
+        const CaseRec& c = g.cases[ci];
+        u += c.u_kips;
+        beta += c.beta_kips;
+        // Per-case extras live in the Row list in the same order as g.cases.
+        const Row& r = rs[ci];
+        slack += r.slack;
+        sag += r.sag_ft;  // NaN when any case has no stored fit
+        lowest += r.lowest_ft;  // NaN also for fits stored before schema 6
+        lo += r.ci_low;
+        hi += r.ci_high;
+        level = r.ci_level;
+        bs = std::min(bs, r.bs);
+        above = above || r.above;
+      }
+      if (p.cases.size() == 1) {
+        p.u_kips = u;
+        p.beta_kips = beta;
+      } else {
+        p.u_kips = u / n;
+        p.beta_kips = beta / n;
+      }
+      p.slack = slack / n;
+      p.sag_ft = sag / n;
+      p.lowest_ft = lowest / n;
+      p.ci_low_kips = lo / n;
+      p.ci_high_kips = hi / n;
+      p.ln_ci_low = p.ci_low_kips > 0.0 ? std::log(p.ci_low_kips) : kNaN;
+      p.ln_ci_high = p.ci_high_kips > 0.0 ? std::log(p.ci_high_kips) : kNaN;
+      p.ci_level = level;
+      p.bs_lbf = bs;
+      p.above_bs = above;
+      if (!(p.u_kips > 0.0)) *log_ok = false;
+      p.ln_u = std::log(p.u_kips);
+      p.ln_beta = std::log(p.beta_kips);
+    }
+    std::sort(node.points.begin(), node.points.end(),
+              [](const MeanPoint& a, const MeanPoint& b) { return a.mean_lbf < b.mean_lbf; });
+  }
+}
+
+}  // namespace
+
 Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions options) {
   options.validate();
   Engine e;
   e.options_ = options;
-  std::map<std::tuple<std::string, std::string, std::string, std::string>, std::size_t> group_of;
-  struct Row {
-    CaseRec rec;
-    double folded_heading = 0.0, slack = 0.0, ci_level = 0.0, ci_low = 0.0, ci_high = 0.0, bs = 0.0;
-    double sag_ft = kNaN, lowest_ft = kNaN;
-    bool above = false;
-  };
-  std::vector<std::vector<Row>> rows;
+  LoadedRows loaded;
   try {
     store::Database db = store::Database::open(path, store::Database::Mode::kReadOnly);
-    store::Statement st = db.prepare(
-        "SELECT c.case_id, c.tug_name, c.tow_name, c.line_type, c.speed_kt, c.spectrum, c.wind_kt, c.hs_ft, "
-        "c.tp_s, c.gamma, c.swell_hs_ft, c.heading_deg, c.length_ft, c.mean_tension_lbf, c.days, "
-        "r.gumbel_u_kips, r.gumbel_alpha_per_kip, r.dynamic_999_kips, r.ci_level, r.ci_low_kips, r.ci_high_kips, "
-        "r.breaking_strength_lbf, r.above_breaking_strength, r.slack_fraction, c.calculated_mean_tension_lbf, "
-        "f.sag_ft, f.lowest_elevation_ft FROM cases c JOIN results r ON r.case_id = c.case_id "
-        "LEFT JOIN towline_fits f ON f.fit_id = c.fit_id WHERE c.status = 'done' ORDER BY c.case_id");
-    while (st.step()) {
-      Row r;
-      r.rec.id = st.column_int(0);
-      const std::string tug = st.column_text(1), tow = st.column_text(2), line = st.column_text(3);
-      r.rec.speed_kt = st.column_double(4);
-      std::string family = st.column_text(5);
-      const auto wind = st.column_optional_double(6), hs = st.column_optional_double(7);
-      const auto tp = st.column_optional_double(8), gamma = st.column_optional_double(9);
-      if (!st.is_null(10) || family.find("+swell") != std::string::npos) continue;  // swell seas: not gridded
-      check_stored_row(st, path);
-      if (wind.has_value() == hs.has_value()) continue;                             // not one sea parameter
-      r.rec.wind_kt = wind.value_or(kNaN);
-      r.rec.hs_ft = hs.value_or(kNaN);
-      r.rec.tp_s = hs ? tp.value_or(0.0) : kNaN;
-      if (gamma) family += "(gamma=" + format_value(*gamma) + ")";
-      r.rec.heading_deg = st.column_double(11);
-      r.folded_heading = fold_heading_deg(r.rec.heading_deg);
-      r.rec.length_ft = st.column_double(12);
-      r.rec.mean_lbf = st.column_double(13);
-      r.rec.days = static_cast<int>(st.column_int(14));
-      r.rec.u_kips = st.column_double(15);
-      const double alpha = st.column_double(16);
-      r.rec.dynamic_999_kips = st.column_double(17);
-      r.ci_level = st.column_double(18);
-      r.ci_low = st.column_double(19);
-      r.ci_high = st.column_double(20);
-      r.bs = st.column_double(21);
-      r.above = st.column_int(22) != 0;
-      r.slack = st.column_double(23);
-      r.rec.calc_lbf = st.column_optional_double(24).value_or(kNaN);
-      r.sag_ft = st.column_optional_double(25).value_or(kNaN);
-      r.lowest_ft = st.column_optional_double(26).value_or(kNaN);
-      r.rec.beta_kips = 1.0 / alpha;
-      const auto key = std::make_tuple(tug, tow, line, (wind ? "wind:" : "hs:") + family);
-      auto [it, inserted] = group_of.try_emplace(key, e.groups_.size());
-      if (inserted) {
-        Group g;
-        g.tug = tug;
-        g.tow = tow;
-        g.line = line;
-        g.family = family;
-        g.wind_sea = wind.has_value();
-        g.tug_key = normalise_name(tug);
-        g.tow_key = normalise_name(tow);
-        e.groups_.push_back(std::move(g));
-        rows.emplace_back();
-      }
-      rows[it->second].push_back(r);
-    }
+    read_rows(db, path, &loaded);
     e.coverage_ = load_coverage_notes(db);
   } catch (const DatabaseError&) {
     throw;
@@ -840,102 +957,15 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
   } catch (const StorageError& err) {
     throw DatabaseError(err.what());
   }
-  if (e.groups_.empty()) {
+  if (loaded.groups.empty()) {
     throw DatabaseError(path.string() + ": no finished cases (cases.status = 'done' with a results row) to query");
   }
-
+  e.groups_ = std::move(loaded.groups);
   e.log_ok_ = true;
   for (std::size_t gi = 0; gi < e.groups_.size(); ++gi) {
     Group& g = e.groups_[gi];
-    const auto& rs = rows[gi];
-    std::array<std::vector<double>, kGridAxes> raw;
-    for (const Row& r : rs) {
-      raw[kSpeed].push_back(r.rec.speed_kt);
-      raw[kSea].push_back(g.wind_sea ? r.rec.wind_kt : r.rec.hs_ft);
-      raw[kPeriod].push_back(g.wind_sea ? 0.0 : r.rec.tp_s);
-      raw[kHeading].push_back(r.folded_heading);
-      raw[kLength].push_back(r.rec.length_ft);
-    }
-    std::size_t total = 1;
-    for (int a = kGridAxes - 1; a >= 0; --a) {
-      g.axis[a] = unique_sorted(raw[a]);
-      g.stride[a] = total;
-      total *= g.axis[a].size();
-    }
-    g.node_at.assign(total, -1);
-    for (const Row& r : rs) {
-      std::array<int, kGridAxes> idx{};
-      idx[kSpeed] = find_value(g.axis[kSpeed], r.rec.speed_kt);
-      idx[kSea] = find_value(g.axis[kSea], g.wind_sea ? r.rec.wind_kt : r.rec.hs_ft);
-      idx[kPeriod] = find_value(g.axis[kPeriod], g.wind_sea ? 0.0 : r.rec.tp_s);
-      idx[kHeading] = find_value(g.axis[kHeading], r.folded_heading);
-      idx[kLength] = find_value(g.axis[kLength], r.rec.length_ft);
-      int node = g.node_index(idx);
-      if (node < 0) {
-        node = static_cast<int>(g.nodes.size());
-        std::size_t flat = 0;
-        for (int a = 0; a < kGridAxes; ++a) flat += static_cast<std::size_t>(idx[a]) * g.stride[a];
-        g.node_at[flat] = node;
-        g.nodes.push_back(Node{idx, {}});
-      }
-      const int case_index = static_cast<int>(g.cases.size());
-      g.cases.push_back(r.rec);
-      auto& pts = g.nodes[node].points;
-      auto same = std::find_if(pts.begin(), pts.end(), [&](const MeanPoint& p) { return same_value(p.mean_lbf, r.rec.mean_lbf); });
-      if (same == pts.end()) {
-        MeanPoint p;
-        p.mean_lbf = r.rec.mean_lbf;
-        pts.push_back(p);
-        same = pts.end() - 1;
-      }
-      same->cases.push_back(case_index);
-    }
-    // Merge duplicates (e.g. headings h and 360 - h): average of the parameters.
-    for (Node& node : g.nodes) {
-      for (MeanPoint& p : node.points) {
-        const double n = static_cast<double>(p.cases.size());
-        double u = 0, beta = 0, slack = 0, lo = 0, hi = 0, level = 0, bs = std::numeric_limits<double>::infinity();
-        double sag = 0, lowest = 0;
-        bool above = false;
-        for (int ci : p.cases) {
-          const CaseRec& c = g.cases[ci];
-          u += c.u_kips;
-          beta += c.beta_kips;
-          // Per-case extras live in the Row list in the same order as g.cases.
-          const Row& r = rs[ci];
-          slack += r.slack;
-          sag += r.sag_ft;  // NaN when any case has no stored fit
-          lowest += r.lowest_ft;  // NaN also for fits stored before schema 6
-          lo += r.ci_low;
-          hi += r.ci_high;
-          level = r.ci_level;
-          bs = std::min(bs, r.bs);
-          above = above || r.above;
-        }
-        if (p.cases.size() == 1) {
-          p.u_kips = u;
-          p.beta_kips = beta;
-        } else {
-          p.u_kips = u / n;
-          p.beta_kips = beta / n;
-        }
-        p.slack = slack / n;
-        p.sag_ft = sag / n;
-        p.lowest_ft = lowest / n;
-        p.ci_low_kips = lo / n;
-        p.ci_high_kips = hi / n;
-        p.ln_ci_low = p.ci_low_kips > 0.0 ? std::log(p.ci_low_kips) : kNaN;
-        p.ln_ci_high = p.ci_high_kips > 0.0 ? std::log(p.ci_high_kips) : kNaN;
-        p.ci_level = level;
-        p.bs_lbf = bs;
-        p.above_bs = above;
-        if (!(p.u_kips > 0.0)) e.log_ok_ = false;
-        p.ln_u = std::log(p.u_kips);
-        p.ln_beta = std::log(p.beta_kips);
-      }
-      std::sort(node.points.begin(), node.points.end(),
-                [](const MeanPoint& a, const MeanPoint& b) { return a.mean_lbf < b.mean_lbf; });
-    }
+    build_grid(g, loaded.rows[gi]);
+    merge_points(g, loaded.rows[gi], &e.log_ok_);
     assign_calculated(g);
     e.case_count_ += static_cast<int>(g.cases.size());
   }
@@ -1169,165 +1199,104 @@ std::string Engine::coverage_reason(const Group& g, const Request& r) const {
   return why;
 }
 
-Answer Engine::answer(const Request& asked, const Request& r, const Group& g, double wind_from_hs_kt) const {
-  const Space s = space_;
-  const bool ex = r.extrapolate;
+namespace {
 
+// The request field of grid axis a in group g.
+std::string axis_field(const Group& g, int a) {
+  return a == kSea ? (g.wind_sea ? "wind_kt" : "hs_ft") : kAxisField[a];
+}
+
+// The question's grid coordinates and its cell on every axis (EQ-QUERY-6).
+struct Located {
   std::array<double, kGridAxes> q{};
-  q[kSpeed] = r.speed_kt;
-  q[kSea] = g.wind_sea ? r.wind_kt : r.hs_ft;
-  q[kHeading] = fold_heading_deg(r.heading_deg);
-  q[kLength] = r.length_ft;
+  Brackets br;
+};
+
+Located locate(const Group& g, const Request& r) {
+  Located at;
+  at.q[kSpeed] = r.speed_kt;
+  at.q[kSea] = g.wind_sea ? r.wind_kt : r.hs_ft;
+  at.q[kHeading] = fold_heading_deg(r.heading_deg);
+  at.q[kLength] = r.length_ft;
   if (g.wind_sea) {
-    q[kPeriod] = 0.0;
+    at.q[kPeriod] = 0.0;
   } else if (std::isnan(r.tp_s)) {
     if (g.axis[kPeriod].size() > 1) {
       throw InputError("tp_s: a peak period is required; " + g.name() + " stores " +
                        std::to_string(g.axis[kPeriod].size()) + " periods from " +
                        format_value(g.axis[kPeriod].front()) + " to " + format_value(g.axis[kPeriod].back()) + " s");
     }
-    q[kPeriod] = g.axis[kPeriod].front();
+    at.q[kPeriod] = g.axis[kPeriod].front();
   } else {
-    q[kPeriod] = r.tp_s;
+    at.q[kPeriod] = r.tp_s;
   }
-  Brackets br;
   for (int a = 0; a < kGridAxes; ++a) {
-    const std::string field = a == kSea ? (g.wind_sea ? "wind_kt" : "hs_ft") : kAxisField[a];
     const std::string unit = a == kSea ? (g.wind_sea ? "kt" : "ft") : kAxisUnit[a];
-    br[a] = make_bracket(g.axis[a], q[a], ex, field, unit, g.name());
+    at.br[a] = make_bracket(g.axis[a], at.q[a], r.extrapolate, axis_field(g, a), unit, g.name());
   }
+  return at;
+}
 
-  // Extrapolated far, the interpolant can leave the cell's nodes behind or stop
-  // being a distribution: such a refusal names the fields that were extrapolated.
-  auto name_extrapolated = [&](auto&& fn) {
-    std::string fields;
-    for (int a = 0; a < kGridAxes; ++a) {
-      if (!br[a].outside) continue;
-      const std::string field = a == kSea ? (g.wind_sea ? "wind_kt" : "hs_ft") : kAxisField[a];
-      fields += (fields.empty() ? "" : ", ") + field + " = " + format_value(q[a]) + " (stored " +
-                format_value(g.axis[a].front()) + " to " + format_value(g.axis[a].back()) + ")";
-    }
-    if (fields.empty() && !std::isnan(r.mean_tension_lbf)) {
-      fields = "mean_tension_lbf = " + format_value(r.mean_tension_lbf);
-    }
-    if (!ex || fields.empty()) return fn();
-    const std::string prefix = "extrapolated from " + fields + ": ";
-    try {
-      fn();
-    } catch (const NumericalError& e) {
-      throw NumericalError(prefix + e.what());
-    } catch (const OutOfRangeError& e) {
-      throw OutOfRangeError(prefix + e.what());
-    }
-  };
-  Evaluation ev;
-  name_extrapolated([&] { evaluate(g, br, MeanTarget{r.mean_tension_lbf, kNaN}, s, ex, &ev); });
-
-  const double c = std::log(r.tow_days) + gumbel_reduced_variate(r.probability);
-  const double c999 = gumbel_reduced_variate(kPlanningProbability);
-  Answer ans;
-  ans.equivalent_wind_kt = wind_from_hs_kt;
-  ans.tug = g.tug;
-  ans.tow = g.tow;
-  ans.space = s;
-  ans.gumbel_u_kips = ev.u;
-  ans.gumbel_alpha_per_kip = 1.0 / ev.beta;
-  ans.dynamic_tension_kips = ev.u + ev.beta * c;
-  ans.dynamic_999_kips = ev.u + ev.beta * c999;
-  // The query's own mean tension when given (the weighted sum only rounds it).
-  ans.mean_tension_lbf = !std::isnan(r.mean_tension_lbf) ? r.mean_tension_lbf
-                         : g.relative                   ? ev.calc_lbf
-                                                        : ev.mean_lbf;
-  ans.calculated_mean_tension_lbf = ev.calc_lbf;
-  ans.mean_tension_factor = ev.factor;
-  ans.extreme_tension_lbf = ans.mean_tension_lbf + ans.dynamic_tension_kips * 1000.0;
-  ans.breaking_strength_lbf = ev.bs_min;
-  ans.extreme_limit_lbf = ev.bs_min / options_.extreme_safety_factor;
-  ans.mean_limit_lbf =
-      ev.bs_min / (r.on_brake ? options_.mean_safety_factor_brake : options_.mean_safety_factor_machine);
-  ans.extreme_check_passed = ans.extreme_tension_lbf <= ans.extreme_limit_lbf;
-  ans.mean_check_passed = ans.mean_tension_lbf <= ans.mean_limit_lbf;
-  ans.slack_fraction = ev.slack;
-  ans.catenary_sag_ft = ev.sag_ft;
-  ans.catenary_depth_ft = -ev.lowest_ft;
-  ans.ci_level = ev.ci_level;
-  ans.ci_low_kips = ev.ci_low;
-  ans.ci_high_kips = ev.ci_high;
-
-  auto x_at = [&](const NodeValue& v) { return node_u(v, s) + node_beta(v, s) * c; };
-  double err = 0.0;
-  name_extrapolated([&] {
-    err = interpolation_error_kips(g, br, ev, MeanTarget{r.mean_tension_lbf, ev.factor}, s, ex, c,
-                                   ans.dynamic_tension_kips);
-  });
-  const int n_corners = 1 << ev.active_count;
-  ans.interpolation_error_kips = err;
-  const double ci_half = 0.5 * (ev.ci_high - ev.ci_low) * quantile_se_factor(c) / quantile_se_factor(c999);
-  ans.uncertainty_kips = std::hypot(err, ci_half);
-  name_extrapolated([&] { require_physical_answer(ans); });
-
-  // Warnings.
-  auto warn = [&](WarningKind kind, std::string msg) { ans.warnings.push_back({kind, std::move(msg)}); };
-  if (!std::isnan(wind_from_hs_kt)) {
-    warn(WarningKind::kEquivalentWind,
-         "hs_ft = " + format_value(asked.hs_ft) + " ft answered as the fully developed (Pierson-Moskowitz) sea of " +
-             format_value(std::round(wind_from_hs_kt * 100.0) / 100.0) + " kt wind (Hs = 0.2092 U^2 / g, Tp " +
-             format_value(std::round(pm_peak_period_s(wind_from_hs_kt) * 100.0) / 100.0) +
-             " s): the database holds wind seas only");
-  }
+// Runs fn. Extrapolated far, the interpolant can leave the cell's nodes behind
+// or stop being a distribution: a refusal from fn then names the fields that
+// were extrapolated and their stored spans.
+template <class F>
+void naming_extrapolated(const Group& g, const Located& at, const Request& r, F&& fn) {
+  std::string fields;
   for (int a = 0; a < kGridAxes; ++a) {
-    if (!br[a].outside) continue;
-    ans.extrapolated = true;
-    const std::string field = a == kSea ? (g.wind_sea ? "wind_kt" : "hs_ft") : kAxisField[a];
-    warn(WarningKind::kExtrapolated,
-         field + " = " + format_value(q[a]) + " is outside the stored range [" + format_value(g.axis[a].front()) +
-             ", " + format_value(g.axis[a].back()) + "] of " + g.name() + ": " +
-             (g.axis[a].size() == 1 ? "held at the one stored value" : "extrapolated linearly from the end cell"));
+    if (!at.br[a].outside) continue;
+    fields += (fields.empty() ? "" : ", ") + axis_field(g, a) + " = " + format_value(at.q[a]) + " (stored " +
+              format_value(g.axis[a].front()) + " to " + format_value(g.axis[a].back()) + ")";
   }
-  if (ev.mean_extrapolated) {
-    ans.extrapolated = true;
-    warn(WarningKind::kExtrapolated, "mean_tension_lbf = " + format_value(r.mean_tension_lbf) +
-                                         " is outside the mean tensions stored at some grid nodes: extrapolated "
-                                         "linearly from each node's two nearest mean tensions");
+  if (fields.empty() && !std::isnan(r.mean_tension_lbf)) fields = "mean_tension_lbf = " + format_value(r.mean_tension_lbf);
+  if (!r.extrapolate || fields.empty()) return fn();
+  const std::string prefix = "extrapolated from " + fields + ": ";
+  try {
+    fn();
+  } catch (const NumericalError& e) {
+    throw NumericalError(prefix + e.what());
+  } catch (const OutOfRangeError& e) {
+    throw OutOfRangeError(prefix + e.what());
   }
-  if (ans.mean_tension_lbf > options_.tug_capacity_lbf) {
-    warn(WarningKind::kAboveCapacity,
-         "mean tension " + format_value(std::round(ans.mean_tension_lbf)) + " lbf is above " +
-             format_value(options_.tug_capacity_lbf) +
-             " lbf, beyond the capacity of the tugs (thesis ch. 5): the tow would have to slow down; the answer "
-             "is for the speed asked");
-  }
-  if (ev.missing > 0) {
-    ans.extrapolated = true;
-    warn(WarningKind::kIncompleteGrid, std::to_string(ev.missing) + " of " + std::to_string(n_corners) +
-                                           " grid nodes around the query are not stored; the answer uses the others "
-                                           "(weights renormalised)");
-  }
-  if (ans.extreme_tension_lbf > ans.breaking_strength_lbf || ev.above_bs) {
-    warn(WarningKind::kAboveBreaking,
-         "extreme tension " + format_value(std::round(ans.extreme_tension_lbf)) + " lbf" +
-             (ans.extreme_tension_lbf > ans.breaking_strength_lbf ? " exceeds" : " is near cases above") +
-             " the towline breaking strength " + format_value(ans.breaking_strength_lbf) +
-             " lbf: the polynomial towline model is not valid above breaking strength (thesis 6.1); the dynamic "
-             "tension is of unknown accuracy there");
-  }
-  if (ans.dynamic_tension_kips > options_.high_tension_warning_kips) {
-    warn(WarningKind::kHighTension, "dynamic tension " + format_value(std::round(ans.dynamic_tension_kips * 10) / 10) +
-                                        " kips is above " + format_value(options_.high_tension_warning_kips) +
-                                        " kips, outside the bounds of the towline simulation model (thesis 6.2)");
-  }
-  if (ans.slack_fraction > options_.slack_warning_fraction) {
-    warn(WarningKind::kSlack, "slack-prone: the towline is slack " + format_value(std::round(ans.slack_fraction * 1e4) / 100) +
-                                  " % of the time in the stored cases; snatch loads make the Type I fit "
-                                  "underestimate the peak tension (thesis 4.2, YRBM in trailing seas)");
-  }
-  if (ev.bs_max > ev.bs_min * (1.0 + kSameValueRelTol)) {
-    warn(WarningKind::kBreakingDiffers, "the cases around the query store different breaking strengths (" +
-                                            format_value(ev.bs_min) + " to " + format_value(ev.bs_max) +
-                                            " lbf); the smallest is used");
-  }
-  // Monotonicity: more wind (or a higher sea) never lowers the dynamic tension
-  // (thesis 6.3.1); a longer towline never raises it (thesis 6.3.3).
+}
+
+// EQ-QUERY-3..5: the numbers of the answer from the evaluated cell, c the
+// frequency term of the question's probability and tow days.
+void fill_values(const Group& g, const Evaluation& ev, const Request& r, const QueryOptions& o, Space s, double c,
+                 Answer* ans) {
+  const double c999 = gumbel_reduced_variate(kPlanningProbability);
+  ans->tug = g.tug;
+  ans->tow = g.tow;
+  ans->space = s;
+  ans->gumbel_u_kips = ev.u;
+  ans->gumbel_alpha_per_kip = 1.0 / ev.beta;
+  ans->dynamic_tension_kips = ev.u + ev.beta * c;
+  ans->dynamic_999_kips = ev.u + ev.beta * c999;
+  // The query's own mean tension when given (the weighted sum only rounds it).
+  ans->mean_tension_lbf = !std::isnan(r.mean_tension_lbf) ? r.mean_tension_lbf
+                          : g.relative                   ? ev.calc_lbf
+                                                         : ev.mean_lbf;
+  ans->calculated_mean_tension_lbf = ev.calc_lbf;
+  ans->mean_tension_factor = ev.factor;
+  ans->extreme_tension_lbf = ans->mean_tension_lbf + ans->dynamic_tension_kips * 1000.0;
+  ans->breaking_strength_lbf = ev.bs_min;
+  ans->extreme_limit_lbf = ev.bs_min / o.extreme_safety_factor;
+  ans->mean_limit_lbf = ev.bs_min / (r.on_brake ? o.mean_safety_factor_brake : o.mean_safety_factor_machine);
+  ans->extreme_check_passed = ans->extreme_tension_lbf <= ans->extreme_limit_lbf;
+  ans->mean_check_passed = ans->mean_tension_lbf <= ans->mean_limit_lbf;
+  ans->slack_fraction = ev.slack;
+  ans->catenary_sag_ft = ev.sag_ft;
+  ans->catenary_depth_ft = -ev.lowest_ft;
+  ans->ci_level = ev.ci_level;
+  ans->ci_low_kips = ev.ci_low;
+  ans->ci_high_kips = ev.ci_high;
+}
+
+// Monotonicity (a warning): more wind (or a higher sea) never lowers the
+// dynamic tension (thesis 6.3.1); a longer towline never raises it (6.3.3).
+void warn_not_monotone(const Group& g, const Located& at, const Evaluation& ev, Space s, double c, Answer* ans) {
+  auto x_at = [&](const NodeValue& v) { return node_u(v, s) + node_beta(v, s) * c; };
+  const int n_corners = 1 << ev.active_count;
   for (int j = 0; j < ev.active_count; ++j) {
     const int a = ev.active[j];
     if (a != kSea && a != kLength) continue;
@@ -1340,63 +1309,159 @@ Answer Engine::answer(const Request& asked, const Request& r, const Group& g, do
       const bool bad = a == kSea ? xh < xl : xh > xl;
       if (!bad) continue;
       const std::string what = a == kSea ? (g.wind_sea ? "more wind" : "a higher sea") : "a longer towline";
-      const std::string field = a == kSea ? (g.wind_sea ? "wind_kt" : "hs_ft") : "length_ft";
-      warn(WarningKind::kNotMonotone,
+      ans->warnings.push_back(
+          {WarningKind::kNotMonotone,
            "the stored data are not monotone: " + what + " " + (a == kSea ? "lowers" : "raises") +
-               " the dynamic tension between " + field + " = " + format_value(g.axis[a][br[a].i0]) + " and " +
-               format_value(g.axis[a][br[a].i1]) + " (" + format_value(xl) + " -> " + format_value(xh) +
-               " kips) at " + g.describe(lo.idx) + ", against the physics (thesis 6.3); check these cases");
+               " the dynamic tension between " + axis_field(g, a) + " = " + format_value(g.axis[a][at.br[a].i0]) +
+               " and " + format_value(g.axis[a][at.br[a].i1]) + " (" + format_value(xl) + " -> " +
+               format_value(xh) + " kips) at " + g.describe(lo.idx) + ", against the physics (thesis 6.3); check "
+               "these cases"});
       break;
     }
   }
+}
 
-  // Nearest stored cases: those of the cell's corner nodes.
-  if (options_.nearest_cases > 0) {
-    std::vector<NearCase> cand;
-    for (int mask = 0; mask < n_corners; ++mask) {
-      std::array<int, kGridAxes> idx{};
-      for (int a = 0; a < kGridAxes; ++a) idx[a] = br[a].i0;
-      for (int j = 0; j < ev.active_count; ++j) {
-        if ((mask >> j) & 1) idx[ev.active[j]] = br[ev.active[j]].i1;
-      }
-      const int node = g.node_index(idx);
-      if (node < 0) continue;
-      for (const MeanPoint& p : g.nodes[node].points) {
-        for (int ci : p.cases) {
-          const CaseRec& cr = g.cases[ci];
-          NearCase nc;
-          nc.case_id = cr.id;
-          nc.speed_kt = cr.speed_kt;
-          nc.wind_kt = cr.wind_kt;
-          nc.hs_ft = cr.hs_ft;
-          nc.tp_s = g.wind_sea ? kNaN : cr.tp_s;
-          nc.heading_deg = cr.heading_deg;
-          nc.length_ft = cr.length_ft;
-          nc.mean_tension_lbf = cr.mean_lbf;
-          nc.days = cr.days;
-          nc.dynamic_999_kips = cr.dynamic_999_kips;
-          nc.dynamic_tension_kips = cr.u_kips + cr.beta_kips * c;
-          double d2 = 0.0;
-          for (int j = 0; j < ev.active_count; ++j) {
-            const int a = ev.active[j];
-            const double h = g.axis[a][br[a].i1] - g.axis[a][br[a].i0];
-            const double dq = (q[a] - g.axis[a][idx[a]]) / h;
-            d2 += dq * dq;
-          }
-          const double dm = (ev.mean_lbf - cr.mean_lbf) / ev.mean_lbf;
-          nc.distance = std::sqrt(d2 + dm * dm);
-          cand.push_back(nc);
+// The warnings of EQ-QUERY-5 and the data's limits, in a fixed order.
+void add_warnings(const Group& g, const Located& at, const Evaluation& ev, const Request& asked, const Request& r,
+                  double wind_from_hs_kt, const QueryOptions& o, Answer* ans) {
+  auto warn = [&](WarningKind kind, std::string msg) { ans->warnings.push_back({kind, std::move(msg)}); };
+  if (!std::isnan(wind_from_hs_kt)) {
+    warn(WarningKind::kEquivalentWind,
+         "hs_ft = " + format_value(asked.hs_ft) + " ft answered as the fully developed (Pierson-Moskowitz) sea of " +
+             format_value(std::round(wind_from_hs_kt * 100.0) / 100.0) + " kt wind (Hs = 0.2092 U^2 / g, Tp " +
+             format_value(std::round(pm_peak_period_s(wind_from_hs_kt) * 100.0) / 100.0) +
+             " s): the database holds wind seas only");
+  }
+  for (int a = 0; a < kGridAxes; ++a) {
+    if (!at.br[a].outside) continue;
+    ans->extrapolated = true;
+    warn(WarningKind::kExtrapolated,
+         axis_field(g, a) + " = " + format_value(at.q[a]) + " is outside the stored range [" +
+             format_value(g.axis[a].front()) + ", " + format_value(g.axis[a].back()) + "] of " + g.name() + ": " +
+             (g.axis[a].size() == 1 ? "held at the one stored value" : "extrapolated linearly from the end cell"));
+  }
+  if (ev.mean_extrapolated) {
+    ans->extrapolated = true;
+    warn(WarningKind::kExtrapolated, "mean_tension_lbf = " + format_value(r.mean_tension_lbf) +
+                                         " is outside the mean tensions stored at some grid nodes: extrapolated "
+                                         "linearly from each node's two nearest mean tensions");
+  }
+  if (ans->mean_tension_lbf > o.tug_capacity_lbf) {
+    warn(WarningKind::kAboveCapacity,
+         "mean tension " + format_value(std::round(ans->mean_tension_lbf)) + " lbf is above " +
+             format_value(o.tug_capacity_lbf) +
+             " lbf, beyond the capacity of the tugs (thesis ch. 5): the tow would have to slow down; the answer "
+             "is for the speed asked");
+  }
+  if (ev.missing > 0) {
+    ans->extrapolated = true;
+    warn(WarningKind::kIncompleteGrid, std::to_string(ev.missing) + " of " + std::to_string(1 << ev.active_count) +
+                                           " grid nodes around the query are not stored; the answer uses the others "
+                                           "(weights renormalised)");
+  }
+  if (ans->extreme_tension_lbf > ans->breaking_strength_lbf || ev.above_bs) {
+    warn(WarningKind::kAboveBreaking,
+         "extreme tension " + format_value(std::round(ans->extreme_tension_lbf)) + " lbf" +
+             (ans->extreme_tension_lbf > ans->breaking_strength_lbf ? " exceeds" : " is near cases above") +
+             " the towline breaking strength " + format_value(ans->breaking_strength_lbf) +
+             " lbf: the polynomial towline model is not valid above breaking strength (thesis 6.1); the dynamic "
+             "tension is of unknown accuracy there");
+  }
+  if (ans->dynamic_tension_kips > o.high_tension_warning_kips) {
+    warn(WarningKind::kHighTension, "dynamic tension " + format_value(std::round(ans->dynamic_tension_kips * 10) / 10) +
+                                        " kips is above " + format_value(o.high_tension_warning_kips) +
+                                        " kips, outside the bounds of the towline simulation model (thesis 6.2)");
+  }
+  if (ans->slack_fraction > o.slack_warning_fraction) {
+    warn(WarningKind::kSlack, "slack-prone: the towline is slack " +
+                                  format_value(std::round(ans->slack_fraction * 1e4) / 100) +
+                                  " % of the time in the stored cases; snatch loads make the Type I fit "
+                                  "underestimate the peak tension (thesis 4.2, YRBM in trailing seas)");
+  }
+  if (ev.bs_max > ev.bs_min * (1.0 + kSameValueRelTol)) {
+    warn(WarningKind::kBreakingDiffers, "the cases around the query store different breaking strengths (" +
+                                            format_value(ev.bs_min) + " to " + format_value(ev.bs_max) +
+                                            " lbf); the smallest is used");
+  }
+}
+
+// The stored cases of the cell's corner nodes nearest the question (distance
+// in cell units along the active axes and relative mean tension), at most count.
+std::vector<NearCase> nearest_cases(const Group& g, const Located& at, const Evaluation& ev, double c, int count) {
+  std::vector<NearCase> cand;
+  for (int mask = 0; mask < (1 << ev.active_count); ++mask) {
+    std::array<int, kGridAxes> idx{};
+    for (int a = 0; a < kGridAxes; ++a) idx[a] = at.br[a].i0;
+    for (int j = 0; j < ev.active_count; ++j) {
+      if ((mask >> j) & 1) idx[ev.active[j]] = at.br[ev.active[j]].i1;
+    }
+    const int node = g.node_index(idx);
+    if (node < 0) continue;
+    for (const MeanPoint& p : g.nodes[node].points) {
+      for (int ci : p.cases) {
+        const CaseRec& cr = g.cases[ci];
+        NearCase nc;
+        nc.case_id = cr.id;
+        nc.speed_kt = cr.speed_kt;
+        nc.wind_kt = cr.wind_kt;
+        nc.hs_ft = cr.hs_ft;
+        nc.tp_s = g.wind_sea ? kNaN : cr.tp_s;
+        nc.heading_deg = cr.heading_deg;
+        nc.length_ft = cr.length_ft;
+        nc.mean_tension_lbf = cr.mean_lbf;
+        nc.days = cr.days;
+        nc.dynamic_999_kips = cr.dynamic_999_kips;
+        nc.dynamic_tension_kips = cr.u_kips + cr.beta_kips * c;
+        double d2 = 0.0;
+        for (int j = 0; j < ev.active_count; ++j) {
+          const int a = ev.active[j];
+          const double h = g.axis[a][at.br[a].i1] - g.axis[a][at.br[a].i0];
+          const double dq = (at.q[a] - g.axis[a][idx[a]]) / h;
+          d2 += dq * dq;
         }
+        const double dm = (ev.mean_lbf - cr.mean_lbf) / ev.mean_lbf;
+        nc.distance = std::sqrt(d2 + dm * dm);
+        cand.push_back(nc);
       }
     }
-    const std::size_t keep = std::min(cand.size(), static_cast<std::size_t>(options_.nearest_cases));
-    std::partial_sort(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(keep), cand.end(),
-                      [](const NearCase& a, const NearCase& b) {
-                        return a.distance != b.distance ? a.distance < b.distance : a.case_id < b.case_id;
-                      });
-    cand.resize(keep);
-    ans.nearest = std::move(cand);
   }
+  const std::size_t keep = std::min(cand.size(), static_cast<std::size_t>(count));
+  std::partial_sort(cand.begin(), cand.begin() + static_cast<std::ptrdiff_t>(keep), cand.end(),
+                    [](const NearCase& a, const NearCase& b) {
+                      return a.distance != b.distance ? a.distance < b.distance : a.case_id < b.case_id;
+                    });
+  cand.resize(keep);
+  return cand;
+}
+
+}  // namespace
+
+// EQ-QUERY-3..7 for one resolved request in group g: locate the cell,
+// evaluate it, the answer's numbers, its uncertainty, warnings and nearest cases.
+Answer Engine::answer(const Request& asked, const Request& r, const Group& g, double wind_from_hs_kt) const {
+  const Space s = space_;
+  const Located at = locate(g, r);
+  Evaluation ev;
+  naming_extrapolated(g, at, r, [&] { evaluate(g, at.br, MeanTarget{r.mean_tension_lbf, kNaN}, s, r.extrapolate, &ev); });
+
+  const double c = std::log(r.tow_days) + gumbel_reduced_variate(r.probability);
+  const double c999 = gumbel_reduced_variate(kPlanningProbability);
+  Answer ans;
+  ans.equivalent_wind_kt = wind_from_hs_kt;
+  fill_values(g, ev, r, options_, s, c, &ans);
+  double err = 0.0;
+  naming_extrapolated(g, at, r, [&] {
+    err = interpolation_error_kips(g, at.br, ev, MeanTarget{r.mean_tension_lbf, ev.factor}, s, r.extrapolate, c,
+                                   ans.dynamic_tension_kips);
+  });
+  ans.interpolation_error_kips = err;
+  const double ci_half = 0.5 * (ev.ci_high - ev.ci_low) * quantile_se_factor(c) / quantile_se_factor(c999);
+  ans.uncertainty_kips = std::hypot(err, ci_half);
+  naming_extrapolated(g, at, r, [&] { require_physical_answer(ans); });
+
+  add_warnings(g, at, ev, asked, r, wind_from_hs_kt, options_, &ans);
+  warn_not_monotone(g, at, ev, s, c, &ans);
+  if (options_.nearest_cases > 0) ans.nearest = nearest_cases(g, at, ev, c, options_.nearest_cases);
   return ans;
 }
 
