@@ -52,13 +52,6 @@ mean_tensions = [
 ]
 )";
 
-std::string read_text(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
 class CliRefine : public ::testing::Test {
  protected:
   void SetUp() override {
