@@ -231,7 +231,7 @@ model::Vessel tow_with_propellers() {
 TEST(PropulsionTowPropeller, NavyFormulaInPoundsFeetKnots) {
   // EVIDENCE-OF: EQ-PROPULSION-7
   // Towing Manual: R_P = 3.737 A_P V^2 [lbf, ft^2, kt]. LHA 1: A_P = 320 ft^2
-  // at 6 kt gives 43,050 lbf (ship-data.md 2.3 rounds it to 43,000).
+  // at 6 kt gives 43,050 lbf (docs/ship-data.md 2.3 rounds it to 43,000).
   // Tolerance: C_DP = 1.3181 is rounded to 5 digits (8e-6) and rho differs
   // from 1.9905 slug/ft^3 by 8e-6: 1e-4 relative.
   constexpr double kNavyCoefficientRelTol = 1e-4;

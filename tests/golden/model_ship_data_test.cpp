@@ -26,7 +26,7 @@ namespace towdb::model {
 namespace {
 
 // The ship files' displacement convention: 35.0 ft^3 of sea water per long ton
-// (64.0 lb/ft^3), docs/ship-files.md and ship-data.md section 0.
+// (64.0 lb/ft^3), docs/ship-files.md and docs/ship-data.md section 0.
 constexpr double kCubicFeetPerLongTon = 35.0;
 
 const io::ShipCatalog& catalog() {

@@ -43,7 +43,7 @@ TEST(PropulsionHullGolden, TatfHullDampingAtTenFeetPerSecondNearThesisFigure) {
   // EVIDENCE-OF: EQ-PROPULSION-2
   // Thesis 3.6: "For the T-ATF towing the LHA-1 at 10 ft/sec the hull
   // damping is 754 lbs/(ft/sec)". With the thesis's own T-ATF drag file and
-  // S = 10,475 ft^2 (Denny-Mumford estimate, ship-data.md 7.1):
+  // S = 10,475 ft^2 (Denny-Mumford estimate, docs/ship-data.md 7.1):
   //  - the 1 ft/s forward step (R(11 ft/s) - R(10 ft/s)) / 1 ft/s, the step
   //    the thesis used for its propeller slopes, gives 763 lbf s/ft (+1.2 %);
   //  - the analytic slope at 10 ft/s (5.92 kt, inside the 5-6 kt segment, no
@@ -65,7 +65,7 @@ TEST(PropulsionHullGolden, TatfHullDampingAtTenFeetPerSecondNearThesisFigure) {
 
 TEST(PropulsionHullGolden, TatfResistanceMatchesShipDataCheckColumn) {
   // EVIDENCE-OF: EQ-PROPULSION-1
-  // ship-data.md 7.1 (column R_lb, derived with rho = 1.9905 slug/ft^3 and
+  // docs/ship-data.md 7.1 (column R_lb, derived with rho = 1.9905 slug/ft^3 and
   // S = 10,475 ft^2): 316 lbf at 2 kt, 3,237 at 6 kt, 11,197 at 10 kt,
   // 19,818 at 12 kt. The table is rounded to whole pounds: 0.2 %.
   constexpr double kTableRoundingRelTol = 0.002;

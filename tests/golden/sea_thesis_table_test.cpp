@@ -31,7 +31,7 @@ TEST(SeaThesisTable, PiersonMoskowitzHsMatchesTable54) {
   // EVIDENCE-OF: EQ-SEA-1
   // The closed-form PM gives 7.41 / 16.67 / 22.70 ft against the printed
   // 7.2 / 16.4 / 22.8 ft: the thesis reported its discretised spectrum
-  // (ship-data.md section 6). 3% covers that difference (largest 2.9% at 20 kt).
+  // (docs/ship-data.md section 6). 3% covers that difference (largest 2.9% at 20 kt).
   constexpr double kTableRelTol = 0.03;
   const std::vector<TableRow> rows = read_table();
   ASSERT_EQ(rows.size(), 3u);
@@ -43,7 +43,7 @@ TEST(SeaThesisTable, PiersonMoskowitzHsMatchesTable54) {
 
 TEST(SeaThesisTable, DiscretisedPiersonMoskowitzReproducesTable54) {
   // EVIDENCE-OF: EQ-SEA-1
-  // The hypothesis of ship-data.md section 6: 10 components, left Riemann sum
+  // The hypothesis of docs/ship-data.md section 6: 10 components, left Riemann sum
   // over w = 0.225 .. 1.9 rad/s (dw = 0.1675), Hs = 4 sqrt(sum S dw). With our
   // PM (alpha, beta, U in m/s, g) it must give the printed values to their
   // rounding, 0.05 ft -- evidence that EQ-SEA-1 is the thesis' spectrum.

@@ -1,6 +1,6 @@
 // Test vessels for the propulsion tests, built in code (the ships/*.toml
 // files are written elsewhere). Every number states its source; E marks an
-// engineering estimate from ../shared/reference/ship-data.md.
+// engineering estimate from docs/ship-data.md.
 #ifndef TOWDB_TESTS_SUPPORT_PROPULSION_VESSELS_HPP
 #define TOWDB_TESTS_SUPPORT_PROPULSION_VESSELS_HPP
 
@@ -65,10 +65,10 @@ inline model::DragCurve ittc57_drag_curve(double length_m, double form_factor) {
 }
 
 // T-ATF 166 as a tug: drag file tests/data/propulsion/tatf166_drag.csv
-// (thesis App. A, ship-data.md 7.1) on S = 10,475 ft^2 (ship-data.md 7.1);
+// (thesis App. A, docs/ship-data.md 7.1) on S = 10,475 ft^2 (docs/ship-data.md 7.1);
 // two propellers, D = 9.0 ft (thesis App. A), 227 rpm at 100 %
-// (ship-data.md 7.2: 204.3 rpm = 90 %), 4 blades (E), A_E/A_0 = 0.55
-// (E, ship-data.md 2.3), wake fraction 0.10 (E, a twin-screw tug).
+// (docs/ship-data.md 7.2: 204.3 rpm = 90 %), 4 blades (E), A_E/A_0 = 0.55
+// (E, docs/ship-data.md 2.3), wake fraction 0.10 (E, a twin-screw tug).
 inline model::Vessel make_tatf166() {
   model::Vessel v;
   v.name = "T-ATF 166 (test)";
@@ -93,7 +93,7 @@ inline model::Vessel make_tatf166() {
   p.thrust_deduction = 0.0;
   p.pitch = model::PropellerPitch::kControllable;
   p.nozzle = true;
-  p.installed_power_w = units::hp_to_w(7680.0);  // ship-data.md 2.2 (S40)
+  p.installed_power_w = units::hp_to_w(7680.0);  // docs/ship-data.md 2.2 (S40)
   v.propellers = p;
   return v;
 }

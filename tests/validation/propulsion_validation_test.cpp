@@ -2,7 +2,7 @@
 //   1. Thesis 3.6: T-ATF towing LHA-1 at 10 ft/s, propeller damping
 //      3,856 lbf s/ft at constant RPM (hull damping 754).
 //   2. U.S. Navy Towing Manual worked example (Army TB 55-1900-232-10,
-//      App. L-5; ship-data.md 5.1): DD 963 tow resistance 90,000-113,000 lbf
+//      App. L-5; docs/ship-data.md 5.1): DD 963 tow resistance 90,000-113,000 lbf
 //      over 6.9-7.75 kt in a 25 kt head wind, checked with a CG-47-like tow.
 // Inputs that the sources do not give are estimates, stated below; the
 // checks are therefore order-of-magnitude (1) and +-15 % (2).
@@ -18,9 +18,9 @@
 namespace towdb::propulsion {
 namespace {
 
-// LHA 1 as a tow (ship-data.md 3.3): L_wl 778 ft; S = 88,100 ft^2 (E,
-// Denny-Mumford, ship-data.md 2.3); A_T = 8,000 ft^2 (E); two locked 20 ft
-// propellers with A_P = 320 ft^2 (E, ship-data.md 2.3), wake 0.10 (E).
+// LHA 1 as a tow (docs/ship-data.md 3.3): L_wl 778 ft; S = 88,100 ft^2 (E,
+// Denny-Mumford, docs/ship-data.md 2.3); A_T = 8,000 ft^2 (E); two locked 20 ft
+// propellers with A_P = 320 ft^2 (E, docs/ship-data.md 2.3), wake 0.10 (E).
 // Drag file (E): C_T = 1.2 C_F,ITTC57 (form factor 1.2 for a C_b = 0.65
 // hull; wave resistance negligible at Fn < 0.07).
 model::Vessel make_lha1() {
@@ -101,7 +101,7 @@ TEST(PropulsionValidation, Ffg7TowInTrailingSeasNearMeasuredTension) {
   // resistance 40,000 lbf; the thesis's calculation gave 49,102 and POSSE
   // 59,499 ("both models overestimate"). In trailing seas eq. 2.9 makes the
   // sea term 0, so this case checks hull + propeller + wind + line.
-  // Inputs (ship-data.md 2.3 / 3.6, E): S = 20,000 ft^2, L = 408 ft,
+  // Inputs (docs/ship-data.md 2.3 / 3.6, E): S = 20,000 ft^2, L = 408 ft,
   // C_T = 1.2 C_F,ITTC57, one locked propeller A_P = 127 ft^2 at V (1 - w),
   // w = 0.10, A_T = 2,200 ft^2; the wind assumed to blow with the seas.
   constexpr double kMeasuredTowRelTol = 0.25;  // one measured tow; areas, wake and drag file estimated
@@ -141,7 +141,7 @@ TEST(PropulsionValidation, NavyDd963MeanTensionWithCg47LikeTow) {
   // EVIDENCE-OF: EQ-PROPULSION-12
   // Towing Manual method (its 25 % hull margin, locked propellers at ship
   // speed, C_w = 1.0 and K = 1 for the 25 kt head wind, 10 % towline drag).
-  // CG-47-like tow (ship-data.md 2.3 / 3.5): S = 35,000 ft^2, L = 529 ft,
+  // CG-47-like tow (docs/ship-data.md 2.3 / 3.5): S = 35,000 ft^2, L = 529 ft,
   // drag file C_T = C_F,ITTC57 (the manual's Fig. G-1 was not available),
   // A_P = 290 ft^2, A_T = 3,100 ft^2. The Navy figures include sea-state
   // added resistance, which is left out here (no value published), so
@@ -165,7 +165,7 @@ TEST(PropulsionValidation, NavyDd963MeanTensionWithCg47LikeTow) {
     double speed_kt;
     double tension_lbf;
   };
-  // ship-data.md 5.1 (S17): T-ATF 6.9 kt / 90,000; ARS 50 7.2 / 98,000;
+  // docs/ship-data.md 5.1 (S17): T-ATF 6.9 kt / 90,000; ARS 50 7.2 / 98,000;
   // ATS 1 7.4 / 106,000; T-ATF 7.75 / 113,000.
   for (const NavyPoint& point : {NavyPoint{6.9, 90000.0}, NavyPoint{7.2, 98000.0}, NavyPoint{7.4, 106000.0},
                                  NavyPoint{7.75, 113000.0}}) {
