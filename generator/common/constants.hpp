@@ -18,7 +18,7 @@ inline constexpr double kGravity_m_s2 = 9.80665;
 
 // Sea water density [kg/m^3] = 1.9905 slug/ft^3 (64.0 lb/ft^3), the naval
 // architecture standard used by the thesis and the Navy Towing Manual.
-// Source: ../shared/reference/ship-data.md section 0.
+// Source: docs/ship-data.md section 0.
 inline constexpr double kRhoSeawater_kg_m3 = 1025.87;
 
 // Air density [kg/m^3] = 0.002377 slug/ft^3 (standard sea-level atmosphere).
