@@ -263,65 +263,57 @@ void CaseOptions::validate() const {
   require_in_range("case options: bootstrap_replicates", bootstrap_replicates, 100, 1000000);
 }
 
-std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const CaseOptions& options) {
-  inputs.validate();
-  options.validate();
-  auto m = std::make_shared<CaseModel>();
-  m->inputs = inputs;
-  m->options = options;
-  CaseResult& r = m->partial;
+namespace {
+
+// The record plan's size and coverage, copied into the case result.
+void record_plan_summary(const sea::RecordPlan& plan, CaseResult& r) {
+  r.record_time_step_s = plan.time_step_s();
+  r.record_samples = plan.samples();
+  r.wave_components = plan.components().size();
+  r.retained_variance_fraction = plan.retained_variance_m2() / plan.spectrum_variance_m2();
+}
+
+// The tow points and line angles of the 12-DOF model; the separation is the
+// tug's origin to the tow's, along the track.
+coupled::LineGeometry line_geometry(const model::Vessel& tug, const model::Vessel& tow,
+                                    const towline::FitSummary& towline) {
+  coupled::LineGeometry geometry;
+  geometry.tug_angle_rad = towline.tug_angle_rad;
+  geometry.tow_angle_rad = towline.tow_angle_rad;
+  geometry.tug_point = tug.tow_point;
+  geometry.tow_point = tow.tow_point;
+  geometry.separation_m = -tug.tow_point.x_m + towline.span_m + tow.tow_point.x_m;
+  return geometry;
+}
+
+// The linearised line of the 12-DOF model: a10 and a01 of the polynomial.
+// A very slack wire's polynomial fit can give a10 <= 0 (the cubic follows the
+// large runs, not the small-motion slope; docs/physics.md 2.3); then the
+// static catenary stiffness dH/dX (EQ-TOWLINE-4) stands in (always > 0).
+coupled::LinearLine linearised_line(const towline::TowlineFit& fit) {
+  const double a10 = fit.coefficients().a10();
+  return coupled::LinearLine{a10 > 0.0 ? a10 : fit.summary().static_stiffness_n_m,
+                             std::max(0.0, fit.coefficients().a01())};
+}
+
+// One wave system's vessel responses and coupled transfer functions on a
+// frequency grid spanning its components (empty when none survived the cut-off).
+struct SystemGrid {
+  std::vector<double> omega;
+  std::vector<Complex> f1_tug, f1_tow, xi_p, xi_q;
+  std::vector<double> drift_tug, drift_tow;
+  double heading_rad = 0.0;
+  std::vector<seakeeping::VesselResponse> tug_response, tow_response;  // at U
+};
+
+// Per wave system: the strip-theory responses at U, and the mean added
+// resistance and wave-induced surge damping each adds to the case result.
+std::vector<SystemGrid> system_responses(const CaseInputs& inputs, const CaseOptions& options,
+                                         const std::vector<sea::WaveComponent>& comps, CaseResult& r) {
   const model::Vessel& tug = *inputs.tug;
   const model::Vessel& tow = *inputs.tow;
   const double u = inputs.speed_m_s;
-  const double h = inputs.mean_tension_n;
-
-  // 1. Towline.
-  auto t0 = Clock::now();
-  m->fit = towline::global_fit_cache().get(inputs.towline, towline::TowPoints{tug.tow_point.z_m, tow.tow_point.z_m},
-                                           h, options.towline);
-  r.towline = m->fit->summary();
-  r.timings.towline_s = seconds_since(t0);
-
-  // 2-4. Hydrodynamics, damping, coupling.
-  t0 = Clock::now();
-  const sea::RecordPlan plan(inputs.sea, u, options.record);
-  const auto& comps = plan.components();
-  r.record_time_step_s = plan.time_step_s();
-  r.record_samples = plan.samples();
-  r.wave_components = comps.size();
-  r.retained_variance_fraction = plan.retained_variance_m2() / plan.spectrum_variance_m2();
-
-  coupled::LineGeometry geometry;
-  geometry.tug_angle_rad = r.towline.tug_angle_rad;
-  geometry.tow_angle_rad = r.towline.tow_angle_rad;
-  geometry.tug_point = tug.tow_point;
-  geometry.tow_point = tow.tow_point;
-  geometry.separation_m = -tug.tow_point.x_m + r.towline.span_m + tow.tow_point.x_m;
-  r.separation_m = geometry.separation_m;
-  // The linearised line of the 12-DOF model: a10 and a01 of the polynomial.
-  // A very slack wire's polynomial fit can give a10 <= 0 (the cubic follows the
-  // large runs, not the small-motion slope; docs/physics.md 2.3); then the
-  // static catenary stiffness dH/dX (EQ-TOWLINE-4) stands in (always > 0).
-  const double a10 = m->fit->coefficients().a10();
-  const coupled::LinearLine line{a10 > 0.0 ? a10 : r.towline.static_stiffness_n_m,
-                                 std::max(0.0, m->fit->coefficients().a01())};
-
-  const propulsion::SurgeDamping tug_damping = propulsion::tug_surge_damping(tug, u, h, {}, options.tug_propeller);
-  const propulsion::SurgeDamping tow_damping = propulsion::tow_surge_damping(tow, u, {}, options.tow_propeller);
-  r.tug_hull_damping_n_s_m = tug_damping.hull_n_s_m;
-  r.tug_propeller_damping_n_s_m = tug_damping.propeller_n_s_m;
-  r.tow_hull_damping_n_s_m = tow_damping.hull_n_s_m;
-  r.tow_propeller_damping_n_s_m = tow_damping.propeller_n_s_m;
-
-  // Per wave system: responses on a grid spanning its components.
   const std::size_t n_systems = inputs.sea.systems.size();
-  struct SystemGrid {
-    std::vector<double> omega;
-    std::vector<Complex> f1_tug, f1_tow, xi_p, xi_q;
-    std::vector<double> drift_tug, drift_tow;
-    double heading_rad = 0.0;
-    std::vector<seakeeping::VesselResponse> tug_response, tow_response;  // at U
-  };
   std::vector<SystemGrid> grids(n_systems);
   for (std::size_t s = 0; s < n_systems; ++s) {
     const sea::WaveSystem& system = inputs.sea.systems[s];
@@ -348,6 +340,14 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
           (seakeeping::mean_added_resistance_n(*r_tow2, spectrum) - r_tow_u) / kWaveDampingSpeedStep_m_s;
     }
   }
+  return grids;
+}
+
+// Hull + propeller + wave-induced surge damping of each vessel; both must be
+// positive.
+coupled::SurgeDampings total_dampings(const propulsion::SurgeDamping& tug_damping,
+                                      const propulsion::SurgeDamping& tow_damping, const CaseOptions& options,
+                                      CaseResult& r) {
   // A negative wave-induced damping (a resistance that falls with speed) is
   // kept: it is physics. The total surge damping must stay positive. (The
   // diagnostic nonnegative_wave_damping holds it at 0, issue 17 lead 4.)
@@ -361,10 +361,16 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
                 "must be positive (hull + propeller + wave-induced)");
   require_input(dampings.tow_n_s_m > 0.0, "tow total surge damping (N s/m)", dampings.tow_n_s_m,
                 "must be positive (hull + wave-induced)");
-  for (std::size_t s = 0; s < n_systems; ++s) {
-    SystemGrid& g = grids[s];
+  return dampings;
+}
+
+// Couples each system's responses (once the surge dampings of all systems
+// are known) into its surge forces, non-surge extension and drift coefficients.
+void couple_systems(std::vector<SystemGrid>& grids, const coupled::LineGeometry& geometry,
+                    const coupled::LinearLine& line, const coupled::SurgeDampings& dampings,
+                    const CaseOptions& options) {
+  for (SystemGrid& g : grids) {
     if (g.omega.empty()) continue;
-    // Coupled once the surge dampings of all systems are known.
     const auto c = coupled::couple(g.tug_response, g.tow_response, geometry, line, dampings);
     for (const auto& ci : c) {
       g.f1_tug.push_back(ci.surge_force_tug_n_per_m);
@@ -377,8 +383,16 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
       g.drift_tow.push_back(options.signed_drift ? ci.drift_tow_n_per_m2 : std::max(0.0, ci.drift_tow_n_per_m2));
     }
   }
+}
 
-  // Transfer functions per component (EQ-COUPLED-4: the tow's lag applied here).
+// The day synthesizer of the case: transfer functions per component
+// (EQ-COUPLED-4: the tow's lag applied here), interpolated from the system
+// grids; the first-order ones are kept in the model for the linear check.
+std::unique_ptr<sea::DaySynthesizer> make_synthesizer(const sea::RecordPlan& plan,
+                                                      const std::vector<SystemGrid>& grids,
+                                                      double separation_m, const CaseOptions& options,
+                                                      CaseModel& m) {
+  const auto& comps = plan.components();
   std::vector<std::vector<Complex>> linear(kLinearCount, std::vector<Complex>(comps.size()));
   std::vector<std::vector<double>> drift(kDriftCount, std::vector<double>(comps.size(), 0.0));
   // EQ-CASE-2: where each second-order series acts. The tug's origin is the
@@ -387,13 +401,13 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
   // envelope at the tow, G astern, phase k G cos mu per component (thesis
   // eq. 3-21's lag, as its first-order force has).
   std::vector<std::vector<double>> drift_phase(kDriftCount, std::vector<double>(comps.size(), 0.0));
-  m->h_f1_tug.resize(comps.size());
-  m->h_f1_tow.resize(comps.size());
-  m->h_xi_ns.resize(comps.size());
+  m.h_f1_tug.resize(comps.size());
+  m.h_f1_tow.resize(comps.size());
+  m.h_xi_ns.resize(comps.size());
   for (std::size_t j = 0; j < comps.size(); ++j) {
     const auto& c = comps[j];
     const SystemGrid& g = grids[static_cast<std::size_t>(c.system)];
-    const Complex lag = std::exp(Complex(0.0, c.wavenumber_rad_m * geometry.separation_m * std::cos(c.heading_rad)));
+    const Complex lag = std::exp(Complex(0.0, c.wavenumber_rad_m * separation_m * std::cos(c.heading_rad)));
     const Complex f1_tug = interpolate(g.omega, g.f1_tug, c.omega_rad_s);
     const Complex f1_tow = interpolate(g.omega, g.f1_tow, c.omega_rad_s) * lag;
     const Complex xi = interpolate(g.omega, g.xi_p, c.omega_rad_s) + interpolate(g.omega, g.xi_q, c.omega_rad_s) * lag;
@@ -401,32 +415,83 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
     linear[kF1Tow][j] = f1_tow;
     linear[kXiNs][j] = xi;
     linear[kXiNsDot][j] = Complex(0.0, c.encounter_omega_rad_s) * xi;
-    m->h_f1_tug[j] = f1_tug;
-    m->h_f1_tow[j] = f1_tow;
-    m->h_xi_ns[j] = xi;
+    m.h_f1_tug[j] = f1_tug;
+    m.h_f1_tow[j] = f1_tow;
+    m.h_xi_ns[j] = xi;
     if (options.second_order_forces) {
       drift[kF2Tug][j] = interpolate(g.omega, g.drift_tug, c.omega_rad_s);
       drift[kF2Tow][j] = interpolate(g.omega, g.drift_tow, c.omega_rad_s);
       if (options.tow_drift_at_tow) {
-        drift_phase[kF2Tow][j] = c.wavenumber_rad_m * geometry.separation_m * std::cos(c.heading_rad);
+        drift_phase[kF2Tow][j] = c.wavenumber_rad_m * separation_m * std::cos(c.heading_rad);
       }
     }
   }
-  m->synthesizer = std::make_unique<sea::DaySynthesizer>(plan, linear, drift, drift_phase);
+  return std::make_unique<sea::DaySynthesizer>(plan, linear, drift, drift_phase);
+}
+
+// The two-vessel surge model's masses, dampings and line angles.
+SurgeParameters surge_parameters(const model::Vessel& tug, const model::Vessel& tow,
+                                 const coupled::SurgeDampings& dampings, const towline::FitSummary& towline,
+                                 const coupled::LinearLine& line, const CaseOptions& options) {
+  SurgeParameters p;
+  p.tug_mass_kg = tug.hull.displacement_kg * (1.0 + tug.hull.surge_added_mass_ratio);
+  p.tow_mass_kg = tow.hull.displacement_kg * (1.0 + tow.hull.surge_added_mass_ratio);
+  p.tug_damping_n_s_m = dampings.tug_n_s_m;
+  p.tow_damping_n_s_m = dampings.tow_n_s_m;
+  p.cos_alpha_tug = std::cos(towline.tug_angle_rad);
+  p.cos_alpha_tow = std::cos(towline.tow_angle_rad);
+  if (options.linear_non_surge_tension) {  // EQ-SURGE-6 with the 12-DOF model's line
+    p.linear_non_surge_tension = true;
+    p.non_surge_stiffness_n_m = line.stiffness_n_m;
+    p.non_surge_damping_n_s_m = line.damping_n_s_m;
+  }
+  p.validate();
+  return p;
+}
+
+}  // namespace
+
+std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const CaseOptions& options) {
+  inputs.validate();
+  options.validate();
+  auto m = std::make_shared<CaseModel>();
+  m->inputs = inputs;
+  m->options = options;
+  CaseResult& r = m->partial;
+  const model::Vessel& tug = *inputs.tug;
+  const model::Vessel& tow = *inputs.tow;
+  const double u = inputs.speed_m_s;
+  const double h = inputs.mean_tension_n;
+
+  // 1. Towline.
+  auto t0 = Clock::now();
+  m->fit = towline::global_fit_cache().get(inputs.towline, towline::TowPoints{tug.tow_point.z_m, tow.tow_point.z_m},
+                                           h, options.towline);
+  r.towline = m->fit->summary();
+  r.timings.towline_s = seconds_since(t0);
+
+  // 2-4. Hydrodynamics, damping, coupling.
+  t0 = Clock::now();
+  const sea::RecordPlan plan(inputs.sea, u, options.record);
+  record_plan_summary(plan, r);
+  const coupled::LineGeometry geometry = line_geometry(tug, tow, r.towline);
+  r.separation_m = geometry.separation_m;
+  const coupled::LinearLine line = linearised_line(*m->fit);
+
+  const propulsion::SurgeDamping tug_damping = propulsion::tug_surge_damping(tug, u, h, {}, options.tug_propeller);
+  const propulsion::SurgeDamping tow_damping = propulsion::tow_surge_damping(tow, u, {}, options.tow_propeller);
+  r.tug_hull_damping_n_s_m = tug_damping.hull_n_s_m;
+  r.tug_propeller_damping_n_s_m = tug_damping.propeller_n_s_m;
+  r.tow_hull_damping_n_s_m = tow_damping.hull_n_s_m;
+  r.tow_propeller_damping_n_s_m = tow_damping.propeller_n_s_m;
+
+  std::vector<SystemGrid> grids = system_responses(inputs, options, plan.components(), r);
+  const coupled::SurgeDampings dampings = total_dampings(tug_damping, tow_damping, options, r);
+  couple_systems(grids, geometry, line, dampings, options);
+  m->synthesizer = make_synthesizer(plan, grids, geometry.separation_m, options, *m);
   r.fft_plan_from_stored_wisdom = m->synthesizer->plan_from_stored_wisdom();
 
-  m->surge.tug_mass_kg = tug.hull.displacement_kg * (1.0 + tug.hull.surge_added_mass_ratio);
-  m->surge.tow_mass_kg = tow.hull.displacement_kg * (1.0 + tow.hull.surge_added_mass_ratio);
-  m->surge.tug_damping_n_s_m = dampings.tug_n_s_m;
-  m->surge.tow_damping_n_s_m = dampings.tow_n_s_m;
-  m->surge.cos_alpha_tug = std::cos(r.towline.tug_angle_rad);
-  m->surge.cos_alpha_tow = std::cos(r.towline.tow_angle_rad);
-  if (options.linear_non_surge_tension) {  // EQ-SURGE-6 with the 12-DOF model's line
-    m->surge.linear_non_surge_tension = true;
-    m->surge.non_surge_stiffness_n_m = line.stiffness_n_m;
-    m->surge.non_surge_damping_n_s_m = line.damping_n_s_m;
-  }
-  m->surge.validate();
+  m->surge = surge_parameters(tug, tow, dampings, r.towline, line, options);
   r.tug_mass_kg = m->surge.tug_mass_kg;
   r.tow_mass_kg = m->surge.tow_mass_kg;
   r.timings.hydrodynamics_s = seconds_since(t0);
