@@ -5,9 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <bit>
-#include <future>
-#include <map>
 #include <mutex>
 #include <string>
 
@@ -17,6 +14,8 @@
 #include "common/units.hpp"
 #include "coupled/coupled.hpp"
 #include "propulsion/hull_damping.hpp"
+#include "simulation/response_cache.hpp"
+#include "simulation/tension_laws.hpp"
 #include "statistics/bootstrap.hpp"
 #include "statistics/distributions.hpp"
 #include "statistics/fit.hpp"
@@ -41,110 +40,6 @@ enum Linear : std::size_t { kF1Tug = 0, kF1Tow = 1, kXiNs = 2, kXiNsDot = 3, kLi
 enum Drift : std::size_t { kF2Tug = 0, kF2Tow = 1, kDriftCount = 2 };
 
 
-// The polynomial towline (towline EQ-TOWLINE-11/-13 with the slack limit) in
-// the form simulation/surge.hpp integrates.
-// EQ-CASE-1 (beyond the thesis): the polynomial is only known inside the
-// range of the cable-dynamics runs it was fitted to, [xi_min, xi_max] x
-// [-v_max, v_max]. Outside it a cubic can turn over (negative stiffness)
-// and run away; there it is continued by its tangent plane at the nearest
-// point of the range, with the slopes floored at 0 (tension never falls as the
-// line is stretched further or faster):
-//   tau = P(xc, vc) + max(0, dP/dxi) (xi - xc) + max(0, dP/dxi') (xi' - vc),
-//   xc = clamp(xi, xi_min, xi_max), vc = clamp(xi', -v_max, v_max).
-// Inside the range this is exactly the thesis's polynomial.
-struct PolynomialLaw {
-  static constexpr bool kForcedInline = true;  // surge.hpp: may run on integrate_days_avx2
-  const towline::TowlineFit* fit;
-  towline::AboveBreakingModel model;
-  double x_lo, x_hi, v_max, x_b, k_spring, slack;
-
-  PolynomialLaw(const towline::TowlineFit* f, towline::AboveBreakingModel m)
-      : fit(f),
-        model(m),
-        x_lo(f->summary().fit_xi_min_m),
-        x_hi(f->summary().fit_xi_max_m),
-        v_max(f->summary().fit_xi_dot_max_m_s),
-        x_b(f->summary().spring_onset_extension_m),
-        k_spring(f->summary().straight_spring_n_m),
-        slack(f->summary().slack_limit_n) {}
-
-  // Evaluated four times per RK4 step: inlined into the loop (TOWDB_SURGE_INLINE,
-  // simulation/surge.hpp); GCC 12 otherwise calls extended() out of line.
-  // Templates on the number type (double or the integrator's lanes); the
-  // branches of EQ-CASE-1 are lane selects, the same values as if / else.
-  template <typename T>
-  TOWDB_SURGE_INLINE T p(T x, T v) const {
-    return fit->coefficients().evaluate(x, v);
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T dp_dx(T x, T v) const {
-    const auto& a = fit->coefficients().a;
-    return a[0] + 2.0 * a[2] * x + a[3] * v + 3.0 * a[5] * x * x + 2.0 * a[6] * x * v + a[7] * v * v;
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T dp_dv(T x, T v) const {
-    const auto& a = fit->coefficients().a;
-    return a[1] + a[3] * x + 2.0 * a[4] * v + a[6] * x * x + 2.0 * a[7] * x * v + 3.0 * a[8] * v * v;
-  }
-  // EQ-CASE-1 without the spring and slack limits.
-  template <typename T>
-  TOWDB_SURGE_INLINE T extended(T x, T v) const {
-    const T xc = lanes::clamp(x, x_lo, x_hi), vc = lanes::clamp(v, -v_max, v_max);
-    const T zero = lanes::splat<T>(0.0);
-    T tau = p(xc, vc);
-    const auto x_out = x != xc, v_out = v != vc;  // outside the fitted range (rare)
-    if (lanes::any(x_out)) tau = lanes::select(x_out, tau + lanes::max(zero, dp_dx(xc, vc)) * (x - xc), tau);
-    if (lanes::any(v_out)) tau = lanes::select(v_out, tau + lanes::max(zero, dp_dv(xc, vc)) * (v - vc), tau);
-    return tau;
-  }
-  bool straight_spring() const { return model == towline::AboveBreakingModel::kStraightSpring; }
-  template <typename T>
-  TOWDB_SURGE_INLINE T unlimited(T x, T v) const {
-    const T b = lanes::splat<T>(x_b);
-    const auto above = x > b;
-    if (!straight_spring() || !lanes::any(above)) return extended(x, v);
-    return lanes::select(above, extended(b, v) + k_spring * (x - b), extended(x, v));
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T tension(T x, T v) const {
-    return lanes::max(unlimited(x, v), lanes::splat<T>(slack));
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T stiffness(T x, T v) const {
-    const T xc = lanes::clamp(x, x_lo, x_hi), vc = lanes::clamp(v, -v_max, v_max);
-    const T d = dp_dx(xc, vc);
-    const T k = lanes::select(x != xc, lanes::max(lanes::splat<T>(0.0), d), d);
-    return straight_spring() ? lanes::select(x > lanes::splat<T>(x_b), lanes::splat<T>(k_spring), k) : k;
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T damping(T x, T v) const {
-    if (straight_spring()) x = lanes::select(x > lanes::splat<T>(x_b), lanes::splat<T>(x_b), x);
-    const T xc = lanes::clamp(x, x_lo, x_hi), vc = lanes::clamp(v, -v_max, v_max);
-    const T d = dp_dv(xc, vc);
-    return lanes::select(v != vc, lanes::max(lanes::splat<T>(0.0), d), d);
-  }
-  double mean_tension_n() const { return -slack; }
-};
-
-// tau = a10 xi + a01 xi', never slack (the linear-limit check).
-struct LinearLaw {
-  static constexpr bool kForcedInline = true;  // surge.hpp: may run on integrate_days_avx2
-  double k, c;
-  template <typename T>
-  TOWDB_SURGE_INLINE T tension(T xi, T xd) const {
-    return k * xi + c * xd;
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T stiffness(T, T) const {
-    return lanes::splat<T>(k);
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T damping(T, T) const {
-    return lanes::splat<T>(c);
-  }
-  double mean_tension_n() const { return std::numeric_limits<double>::infinity(); }
-};
-
 // Linear interpolation of y(x) on an increasing grid, clamped at the ends.
 template <typename T>
 T interpolate(const std::vector<double>& x, const std::vector<T>& y, double xq) {
@@ -154,57 +49,6 @@ T interpolate(const std::vector<double>& x, const std::vector<T>& y, double xq) 
   const std::size_t i = static_cast<std::size_t>(it - x.begin());
   const double t = (xq - x[i - 1]) / (x[i] - x[i - 1]);
   return y[i - 1] + (y[i] - y[i - 1]) * t;
-}
-
-// Process-wide memo of strip-theory responses: a sweep shares them between
-// all cases with the same vessel, speed, heading and grid (wind, towline and
-// mean tension do not enter). Concurrent requests wait for one computation.
-class ResponseCache {
- public:
-  using Responses = std::vector<seakeeping::VesselResponse>;
-  std::shared_ptr<const Responses> get(const model::Vessel& vessel, double speed_m_s, double heading_rad,
-                                       const std::vector<double>& omegas, const seakeeping::ResponseOptions& o) {
-    std::string key = vessel.name + "|" + vessel.content_sha256;
-    auto add = [&key](double x) { key += "|" + std::to_string(std::bit_cast<std::uint64_t>(x)); };
-    add(speed_m_s);
-    add(heading_rad);
-    for (double w : omegas) add(w);
-    add(o.min_encounter_frequency_nondim);
-    key += o.transom_terms ? "|t" : "|n";
-    key += o.added_resistance_aft_of_beam ? "|a" : "|z";
-    std::promise<std::shared_ptr<const Responses>> promise;
-    std::shared_future<std::shared_ptr<const Responses>> future;
-    bool compute = false;
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      auto it = entries_.find(key);
-      if (it == entries_.end()) {
-        future = promise.get_future().share();
-        entries_.emplace(key, future);
-        compute = true;
-      } else {
-        future = it->second;
-      }
-    }
-    if (compute) {
-      try {
-        promise.set_value(std::make_shared<const Responses>(
-            seakeeping::compute_response(vessel, speed_m_s, heading_rad, omegas, o)));
-      } catch (...) {
-        promise.set_exception(std::current_exception());
-      }
-    }
-    return future.get();
-  }
-
- private:
-  std::mutex mutex_;
-  std::map<std::string, std::shared_future<std::shared_ptr<const Responses>>> entries_;
-};
-
-ResponseCache& response_cache() {
-  static ResponseCache cache;
-  return cache;
 }
 
 }  // namespace
@@ -219,12 +63,6 @@ struct CaseModel {
   std::vector<Complex> h_f1_tug, h_f1_tow, h_xi_ns;
   CaseResult partial;  // everything known before the days are simulated
 };
-
-std::shared_ptr<const std::vector<seakeeping::VesselResponse>> cached_responses(
-    const model::Vessel& vessel, double speed_m_s, double heading_rad, const std::vector<double>& omegas_rad_s,
-    const seakeeping::ResponseOptions& options) {
-  return response_cache().get(vessel, speed_m_s, heading_rad, omegas_rad_s, options);
-}
 
 std::vector<double> response_grid(const CaseOptions& options) {
   const int n = options.response_frequencies;
@@ -323,8 +161,8 @@ std::vector<SystemGrid> system_responses(const CaseInputs& inputs, const CaseOpt
     g.heading_rad = system.heading_rad;
     if (!has_components) continue;  // no component of this system survived the cut-off
     g.omega = response_grid(options);
-    g.tug_response = *response_cache().get(tug, u, system.heading_rad, g.omega, options.response);
-    g.tow_response = *response_cache().get(tow, u, system.heading_rad, g.omega, options.response);
+    g.tug_response = *cached_responses(tug, u, system.heading_rad, g.omega, options.response);
+    g.tow_response = *cached_responses(tow, u, system.heading_rad, g.omega, options.response);
     const auto spectrum = [&system](double w) { return system.spectrum.density_m2_s(w); };
     const double r_tug_u = seakeeping::mean_added_resistance_n(g.tug_response, spectrum);
     const double r_tow_u = seakeeping::mean_added_resistance_n(g.tow_response, spectrum);
@@ -332,8 +170,8 @@ std::vector<SystemGrid> system_responses(const CaseInputs& inputs, const CaseOpt
     r.tow_added_resistance_n += r_tow_u;
     if (options.wave_surge_damping) {
       const double u2 = u + kWaveDampingSpeedStep_m_s;
-      const auto r_tug2 = response_cache().get(tug, u2, system.heading_rad, g.omega, options.response);
-      const auto r_tow2 = response_cache().get(tow, u2, system.heading_rad, g.omega, options.response);
+      const auto r_tug2 = cached_responses(tug, u2, system.heading_rad, g.omega, options.response);
+      const auto r_tow2 = cached_responses(tow, u2, system.heading_rad, g.omega, options.response);
       r.tug_wave_damping_n_s_m +=
           (seakeeping::mean_added_resistance_n(*r_tug2, spectrum) - r_tug_u) / kWaveDampingSpeedStep_m_s;
       r.tow_wave_damping_n_s_m +=
