@@ -10,8 +10,6 @@
 //   scatter.png log-log scatter of ours vs thesis (gnuplot)
 //   run-signature.txt  the options and a hash of the ship files; a journal
 //               written under another signature is refused (no silent mixing)
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,6 +23,7 @@
 
 #include "cli.hpp"
 #include "common/error.hpp"
+#include "common/progress.hpp"
 #include "output.hpp"
 #include "plot.hpp"
 #include "sweep/calibration.hpp"
@@ -253,18 +252,19 @@ int count_reused(const std::vector<sweep::CalibrationRow>& rows, const std::vect
 }
 
 // One finished case on stderr: a progress bar on a terminal, a line otherwise.
-void report_case(const validation::CaseOutcome& c, int finished, int total, double elapsed, double eta, bool tty) {
+void report_case(const validation::CaseOutcome& c, int finished, int total, double elapsed, double eta,
+                 const ProgressLine& line) {
   const std::string what = c.status == validation::CaseStatus::kOk
                                ? "ratio " + fmt(c.ratio(), 2)
                                : "FAILED: " + c.error;
-  if (tty) {
+  if (line.enabled()) {
     const int width = 30;
     const int filled = width * finished / total;
-    std::fprintf(stderr, "\r  [%s%s] %d/%d cases  %.0f s elapsed  ETA %.0f s  case %d %s\033[K",
-                 std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                 std::string(static_cast<std::size_t>(width - filled), '.').c_str(), finished, total, elapsed, eta,
-                 c.row.case_number, what.substr(0, 60).c_str());
-    if (finished == total) std::fprintf(stderr, "\n");
+    char text[512];
+    std::snprintf(text, sizeof text, "  [%s] %d/%d cases  %.0f s elapsed  ETA %.0f s  case %d %s",
+                  ProgressLine::bar(filled, width, '.').c_str(), finished, total, elapsed, eta, c.row.case_number,
+                  what.substr(0, 60).c_str());
+    line.draw(text, finished == total);
   } else {
     std::cerr << "  " << finished << "/" << total << " case " << c.row.case_number << " " << c.row.tug << "/"
               << c.row.tow << " " << fmt(c.row.heading_deg, 0) << " deg " << c.row.line << ": thesis "
@@ -349,7 +349,7 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
   std::ofstream append(journal, std::ios::app);
 
   const int reused = count_reused(rows, done, options);
-  const bool tty = isatty(STDERR_FILENO) != 0;
+  const ProgressLine progress(true);
   std::cerr << "validate: " << rows.size() << " cases (" << reused << " from " << journal.string()
             << "), days scale " << fmt(a.days_scale) << ", " << a.threads << " thread(s)\n";
   const auto start = std::chrono::steady_clock::now();
@@ -360,7 +360,7 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
     ++computed;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double eta = elapsed * (to_compute - computed) / computed;
-    report_case(c, finished, total, elapsed, eta, tty);
+    report_case(c, finished, total, elapsed, eta, progress);
   };
   std::vector<validation::CaseOutcome> outcomes = validation::run_all(rows, catalog, options, done, on_outcome);
   append.close();
