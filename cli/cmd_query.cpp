@@ -41,6 +41,7 @@ using nlohmann::ordered_json;
 using towdb::query::QueryError;
 using towdb::query::QueryRequest;
 using towdb::query::QueryResult;
+using towdb::query::warning_kind_name;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -63,21 +64,6 @@ int space_code(const std::string& s) {
 }
 
 const char* space_name(int s) { return s == TOWDB_QUERY_SPACE_LOG ? "log" : "linear"; }
-
-const char* warning_kind_name(int kind) {
-  switch (kind) {
-    case TOWDB_QUERY_WARN_EXTRAPOLATED: return "extrapolated";
-    case TOWDB_QUERY_WARN_ABOVE_BREAKING: return "above_breaking_strength";
-    case TOWDB_QUERY_WARN_SLACK: return "slack_prone";
-    case TOWDB_QUERY_WARN_NOT_MONOTONE: return "not_monotone";
-    case TOWDB_QUERY_WARN_INCOMPLETE_GRID: return "incomplete_grid";
-    case TOWDB_QUERY_WARN_HIGH_TENSION: return "high_tension";
-    case TOWDB_QUERY_WARN_BREAKING_DIFFERS: return "breaking_strength_differs";
-    case TOWDB_QUERY_WARN_ABOVE_CAPACITY: return "above_tug_capacity";
-    case TOWDB_QUERY_WARN_EQUIVALENT_WIND: return "equivalent_wind";
-    default: return "other";
-  }
-}
 
 // Library errors that are the user's (bad input, range, database) exit 2.
 [[noreturn]] void rethrow(const QueryError& e) {
