@@ -59,9 +59,8 @@
 // Vector width: the program is built for baseline x86-64 (SSE2, W = 2). On
 // a processor with AVX2, integrate_days_fastest runs four days as one AVX
 // register (W = 4) in integrate_days_avx2, a function GCC compiles for AVX2
-// on its own (target attribute), chosen at run time (fastest_lane_isa). On
-// the CI machine this cut the integration from 10.4-10.8 to 8.7-9.2 ms per
-// four days (bench/ BM_DayIntegrationLockStep/0 and /1).
+// on its own (target attribute), chosen at run time (fastest_lane_isa); its
+// speed against the SSE2 path is in docs/performance.md.
 //
 // Integrator: classical RK4. The step is the forcing interval dt, split into
 // m substeps where the local line stiffness makes the relative surge mode fast
