@@ -12,6 +12,7 @@
 
 #include "cli.hpp"
 #include "common/error.hpp"
+#include "io/csv.hpp"
 #include "output.hpp"
 #include "store/database.hpp"
 
@@ -25,15 +26,8 @@ struct ExportArgs {
 
 std::string cell(const std::optional<double>& v) { return v ? fmt(*v) : std::string(); }
 
-std::string text_cell(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
+// Text cells go through the one CSV writer (io/csv.hpp).
+constexpr auto& text_cell = io::csv::cell;
 
 // Appendix C vessel labels: "T-ATF 166" -> "T-ATF"; others without spaces ("LHA 1" -> "LHA1").
 std::string thesis_label(const std::string& name) {

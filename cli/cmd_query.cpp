@@ -28,6 +28,7 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "database_basis.hpp"
+#include "io/csv.hpp"
 #include "output.hpp"
 #include "query_json.hpp"
 #include "towdb/query.hpp"
@@ -40,6 +41,7 @@ using nlohmann::ordered_json;
 using towdb::query::QueryError;
 using towdb::query::QueryRequest;
 using towdb::query::QueryResult;
+using towdb::query::warning_kind_name;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -62,21 +64,6 @@ int space_code(const std::string& s) {
 }
 
 const char* space_name(int s) { return s == TOWDB_QUERY_SPACE_LOG ? "log" : "linear"; }
-
-const char* warning_kind_name(int kind) {
-  switch (kind) {
-    case TOWDB_QUERY_WARN_EXTRAPOLATED: return "extrapolated";
-    case TOWDB_QUERY_WARN_ABOVE_BREAKING: return "above_breaking_strength";
-    case TOWDB_QUERY_WARN_SLACK: return "slack_prone";
-    case TOWDB_QUERY_WARN_NOT_MONOTONE: return "not_monotone";
-    case TOWDB_QUERY_WARN_INCOMPLETE_GRID: return "incomplete_grid";
-    case TOWDB_QUERY_WARN_HIGH_TENSION: return "high_tension";
-    case TOWDB_QUERY_WARN_BREAKING_DIFFERS: return "breaking_strength_differs";
-    case TOWDB_QUERY_WARN_ABOVE_CAPACITY: return "above_tug_capacity";
-    case TOWDB_QUERY_WARN_EQUIVALENT_WIND: return "equivalent_wind";
-    default: return "other";
-  }
-}
 
 // Library errors that are the user's (bad input, range, database) exit 2.
 [[noreturn]] void rethrow(const QueryError& e) {
@@ -206,15 +193,8 @@ const char* const kCsvHeader =
     "dynamic_tension_kips,dynamic_999_kips,extreme_tension_lbf,breaking_strength_lbf,extreme_check,mean_check,"
     "uncertainty_kips,catenary_sag_ft,catenary_depth_ft,equivalent_wind_kt,extrapolated,warnings,error";
 
-std::string csv_cell(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  return out + "\"";
-}
+// Text cells go through the one CSV writer (io/csv.hpp).
+constexpr auto& csv_cell = io::csv::cell;
 
 std::string csv_num(double v) { return std::isfinite(v) ? fmt(v) : ""; }
 // A computed value in CSV, rounded as in the text output (1 lbf, 0.1 kips);
@@ -426,41 +406,6 @@ void print_text(const QueryRequest& rq, const QueryResult& r, bool on_brake) {
 
 // ---- batch ------------------------------------------------------------------
 
-// The cells of one CSV line; *unterminated is set when a quoted cell has no
-// closing quote (the line cannot be read as the writer meant it).
-std::vector<std::string> split_csv_line(const std::string& line, bool* unterminated) {
-  std::vector<std::string> cells;
-  std::string cell;
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        cell += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        cell += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      cells.push_back(cell);
-      cell.clear();
-    } else if (c != '\r') {
-      cell += c;
-    }
-  }
-  cells.push_back(cell);
-  *unterminated = quoted;
-  for (auto& s : cells) {
-    while (!s.empty() && s.front() == ' ') s.erase(s.begin());
-    while (!s.empty() && s.back() == ' ') s.pop_back();
-  }
-  return cells;
-}
-
 int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean_defaults) {
   std::string line;
   int line_no = 0;
@@ -468,7 +413,9 @@ int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean
   while (header.empty() && std::getline(std::cin, line)) {
     ++line_no;
     bool unterminated = false;
-    if (!line.empty() && line.find_first_not_of(" \r") != std::string::npos) header = split_csv_line(line, &unterminated);
+    if (!line.empty() && line.find_first_not_of(" \r") != std::string::npos) {
+      header = io::csv::split_quoted(line, &unterminated);
+    }
     if (unterminated) {
       throw InputError("stdin line " + std::to_string(line_no) + ": the header row has a quoted cell without its "
                        "closing '\"'");
@@ -497,7 +444,7 @@ int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean
     // A row that cannot be read is reported on its own row like a bad question
     // (the output keeps one row per input row; found by tests/fuzz/fuzz_batch_csv_test.cpp).
     bool unterminated = false;
-    const auto cells = split_csv_line(line, &unterminated);
+    const auto cells = io::csv::split_quoted(line, &unterminated);
     std::string row_error;
     if (unterminated) {
       row_error = "a quoted cell has no closing '\"'";

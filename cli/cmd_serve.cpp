@@ -172,24 +172,6 @@ std::multimap<std::string, std::string> params_of(const json& object) {
   return params;
 }
 
-query::QueryRequest to_request(const PlanQuestion& q) {
-  query::QueryRequest r;
-  r.tug = q.tug;
-  r.tow = q.tow;
-  r.line = q.line;
-  r.values.speed_kt = q.speed_kt;
-  r.values.wind_kt = q.wind_kt;
-  r.values.hs_ft = q.hs_ft;
-  r.values.tp_s = q.tp_s;
-  r.values.heading_deg = q.heading_deg;
-  r.values.length_ft = q.length_ft;
-  r.values.mean_tension_lbf = q.mean_tension_lbf;
-  r.values.probability = q.probability;
-  r.values.tow_days = q.tow_days;
-  r.values.on_brake = q.brake ? 1 : 0;
-  return r;
-}
-
 // Requests per second per client address, in a token bucket of 2R.
 class RateLimiter {
  public:
@@ -383,13 +365,7 @@ std::thread stop_on_signal(httplib::Server& svr, sigset_t signals) {
 }
 
 int run_serve(const ServeArgs& a) {
-  std::unique_ptr<query::Database> db;
-  try {
-    db = std::make_unique<query::Database>(a.db);
-  } catch (const query::QueryError& e) {
-    if (e.is_input()) throw InputError("--db = " + a.db + ": " + e.what());
-    throw;
-  }
+  std::unique_ptr<query::Database> db = open_plan_database(a.db);
   const int cases = db->case_count();
   Server server(a, std::move(db));
   httplib::Server svr;

@@ -1,8 +1,5 @@
 // towdb simulate: one towing case through the whole chain (towline fit,
 // seakeeping, 12-DOF coupling, long random-sea simulation, statistics).
-#include <unistd.h>
-
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -14,6 +11,7 @@
 #include "cli.hpp"
 #include "common/constants.hpp"
 #include "common/error.hpp"
+#include "common/progress.hpp"
 #include "common/units.hpp"
 #include "output.hpp"
 #include "plot.hpp"
@@ -80,23 +78,24 @@ sea::SeaState sea_state(const SimulateArgs& a) {
   return sea::single_system(wind_sea, mu);
 }
 
-class ProgressBar {
+// The days' progress line: "  [###...] d/D days  E s elapsed  ETA R s ".
+class DaysProgress {
  public:
-  explicit ProgressBar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+  explicit DaysProgress(bool enabled) : line_(enabled) {}
   void update(int done, int total) {
-    if (!enabled_) return;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (!line_.enabled()) return;
+    const double elapsed = line_.elapsed_s();
     const double eta = done > 0 ? elapsed * (total - done) / done : 0.0;
     const int width = 30;
     const int filled = total > 0 ? width * done / total : width;
-    std::fprintf(stderr, "\r  [%s%s] %d/%d days  %.1f s elapsed  ETA %.1f s ", std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                 std::string(static_cast<std::size_t>(width - filled), '.').c_str(), done, total, elapsed, eta);
-    if (done == total) std::fprintf(stderr, "\n");
+    char text[256];
+    std::snprintf(text, sizeof text, "  [%s] %d/%d days  %.1f s elapsed  ETA %.1f s ",
+                  ProgressLine::bar(filled, width, '.').c_str(), done, total, elapsed, eta);
+    line_.draw(text, done == total, /*clear_rest=*/false);
   }
 
  private:
-  bool enabled_;
-  std::chrono::steady_clock::time_point start_;
+  ProgressLine line_;
 };
 
 double kips(double n) { return units::n_to_kips(n); }
@@ -125,7 +124,7 @@ int run_simulate(const Context& ctx, const SimulateArgs& a) {
   o.tow_propeller.state = a.tow_propeller == "locked" ? propulsion::TowPropellerState::kLocked
                           : a.tow_propeller == "free" ? propulsion::TowPropellerState::kFreeSpinning
                                                       : propulsion::TowPropellerState::kRemoved;
-  ProgressBar bar(isatty(STDERR_FILENO) != 0);
+  DaysProgress bar(true);
   o.progress = [&bar](int done, int total) { bar.update(done, total); };
   const simulation::CaseResult r = simulation::run_case(in, o);
   const auto& st = r.statistics;

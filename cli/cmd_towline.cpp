@@ -54,10 +54,21 @@ double coefficient_to_lbf_ft(double a_si, int m, int n) {
   return units::n_to_lbf(a_si) * std::pow(units::ft_to_m(1.0), m + n);
 }
 
-int run_towline(const Context& ctx, const TowlineArgs& a) {
-  const io::ShipCatalog cat = load_catalog(ctx);
-  const model::Vessel& tug = cat.vessel(a.tug).vessel;
-  const model::Vessel& tow = cat.vessel(a.tow).vessel;
+// What the towline command reports: the configuration and its fit.
+struct TowlineReport {
+  const model::Vessel& tug;
+  const model::Vessel& tow;
+  const model::Towline& line;
+  towline::TowPoints points;
+  const towline::FitSummary& s;
+  double resolution_tolerance;  // TowlineFitOptions::resolution_tolerance
+  double runtime_s;
+};
+
+// The tug and tow (checked for their roles) and the towline, whose breaking
+// strength the mean tension must stay below.
+model::Towline checked_towline(const io::ShipCatalog& cat, const model::Vessel& tug, const model::Vessel& tow,
+                               const TowlineArgs& a) {
   if (tug.role != model::VesselRole::kTug) {
     throw InputError("--tug " + a.tug + ": '" + tug.name + "' is not a tug (the towline is the tug's hawser)");
   }
@@ -65,108 +76,105 @@ int run_towline(const Context& ctx, const TowlineArgs& a) {
     throw InputError("--tow " + a.tow + ": '" + tow.name + "' is not a tow (its bow fitting is the far end)");
   }
   const model::LineKind kind = a.line == "wire" ? model::LineKind::kWire : model::LineKind::kFiber;
-  const model::Towline line = cat.towline(tug, kind, units::ft_to_m(a.length_ft));
-  const double mean_n = units::lbf_to_n(a.mean_tension_lbf);
-  if (!(mean_n < line.breaking_strength_n())) {
+  model::Towline line = cat.towline(tug, kind, units::ft_to_m(a.length_ft));
+  if (!(units::lbf_to_n(a.mean_tension_lbf) < line.breaking_strength_n())) {
     throw InputError("--mean-tension-lbf: value = " + fmt(a.mean_tension_lbf) +
                      ": must be below the towline's breaking strength " +
                      fmt_grouped(units::n_to_lbf(line.breaking_strength_n())) + " lbf");
   }
-  const towline::TowPoints points{tug.tow_point.z_m, tow.tow_point.z_m};
-  towline::TowlineFitOptions options;
-  options.num_threads = a.threads;
-  const auto start = std::chrono::steady_clock::now();
-  const std::shared_ptr<const towline::TowlineFit> fit = towline::build_towline_fit(line, points, mean_n, options);
-  const double runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const towline::FitSummary& s = fit->summary();
+  return line;
+}
+
+void print_towline_json(const TowlineArgs& a, const TowlineReport& r) {
+  const towline::FitSummary& s = r.s;
   const auto& powers = towline::PolynomialCoefficients::kPowers;
-
-  if (a.json) {
-    ordered_json j;
-    j["tug"] = tug.name;
-    j["tow"] = tow.name;
-    j["line"] = a.line;
-    j["length_ft"] = a.length_ft;
-    j["mean_tension_lbf"] = a.mean_tension_lbf;
-    j["tug_tow_point_height_ft"] = units::m_to_ft(points.tug_height_m);
-    j["tow_tow_point_height_ft"] = units::m_to_ft(points.tow_height_m);
-    ordered_json segs = ordered_json::array();
-    for (const auto& seg : line.segments) {
-      const auto& c = seg.component;
-      segs.push_back({{"component", c.name},
-                      {"kind", model::to_string(c.kind)},
-                      {"length_ft", units::m_to_ft(seg.length_m)},
-                      {"ea_lbf", units::n_to_lbf(c.ea_n)},
-                      {"weight_in_water_lb_per_ft", units::n_per_m_to_lbf_per_ft(c.weight_in_water_n_m)},
-                      {"breaking_strength_lbf", units::n_to_lbf(c.breaking_strength_n)}});
-    }
-    j["segments"] = segs;
-    j["unstretched_length_ft"] = units::m_to_ft(s.unstretched_length_m);
-    j["span_ft"] = units::m_to_ft(s.span_m);
-    j["chord_ft"] = units::m_to_ft(s.chord_m);
-    j["sag_ft"] = units::m_to_ft(s.sag_m);
-    j["lowest_elevation_ft"] = units::m_to_ft(s.lowest_elevation_m);
-    j["end_angle_tug_deg"] = units::rad_to_deg(s.tug_angle_rad);
-    j["end_angle_tow_deg"] = units::rad_to_deg(s.tow_angle_rad);
-    j["end_tension_tug_lbf"] = units::n_to_lbf(s.tug_tension_n);
-    j["end_tension_tow_lbf"] = units::n_to_lbf(s.tow_tension_n);
-    j["static_stiffness_lbf_per_ft"] = units::n_per_m_to_lbf_per_ft(s.static_stiffness_n_m);
-    j["shallow_sag_static_stiffness_lbf_per_ft"] = units::n_per_m_to_lbf_per_ft(s.dynamic_static_stiffness_n_m);
-    j["straight_spring_lbf_per_ft"] = units::n_per_m_to_lbf_per_ft(s.straight_spring_n_m);
-    j["breaking_strength_lbf"] = units::n_to_lbf(s.breaking_strength_n);
-    j["spring_onset_extension_ft"] = units::m_to_ft(s.spring_onset_extension_m);
-    j["slack_limit_lbf"] = units::n_to_lbf(s.slack_limit_n);
-    ordered_json coef, coef_units, coef_si, coef_si_units;
-    for (int i = 0; i < towline::PolynomialCoefficients::kCount; ++i) {
-      const std::size_t k = static_cast<std::size_t>(i);
-      const int m = powers[k][0], n = powers[k][1];
-      coef[kCoefficientNames[k]] = coefficient_to_lbf_ft(s.coefficients.a[k], m, n);
-      coef_units[kCoefficientNames[k]] = coefficient_unit(m, n, "lbf", "ft");
-      coef_si[kCoefficientNames[k]] = s.coefficients.a[k];
-      coef_si_units[kCoefficientNames[k]] = coefficient_unit(m, n, "N", "m");
-    }
-    j["coefficients"] = coef;
-    j["coefficient_units"] = coef_units;
-    j["coefficients_si"] = coef_si;
-    j["coefficient_units_si"] = coef_si_units;
-    j["fit_rms_lbf"] = units::n_to_lbf(s.fit_rms_error_n);
-    j["fit_max_error_lbf"] = units::n_to_lbf(s.fit_max_error_n);
-    j["rms_tension_lbf"] = units::n_to_lbf(s.rms_tension_n);
-    j["small_motion_ratio"] = s.small_motion_ratio;
-    j["run_weight_exponent"] = s.run_weight_exponent;
-    j["samples_used"] = s.samples_used;
-    j["samples_excluded"] = s.samples_excluded;
-    j["fitted_range"] = {{"xi_min_ft", units::m_to_ft(s.fit_xi_min_m)},
-                         {"xi_max_ft", units::m_to_ft(s.fit_xi_max_m)},
-                         {"xi_dot_max_ft_s", units::m_to_ft(s.fit_xi_dot_max_m_s)}};
-    j["resolution"] = {{"elements", s.n_elements},
-                       {"steps_per_period", s.steps_per_period},
-                       {"steps_per_line_period", s.steps_per_line_period},
-                       {"min_dt_s", s.min_dt_s},
-                       {"max_dt_s", s.max_dt_s},
-                       {"space_resolution_change", s.space_resolution_change},
-                       {"time_resolution_change", s.time_resolution_change},
-                       {"criterion", options.resolution_tolerance},
-                       {"probes_left_out", s.resolution_probes_left_out}};
-    j["runs"] = s.runs;
-    j["runs_not_periodic"] = s.runs_not_periodic;
-    j["runtime_s"] = runtime_s;
-    std::cout << j.dump(2) << "\n";
-    return 0;
+  ordered_json j;
+  j["tug"] = r.tug.name;
+  j["tow"] = r.tow.name;
+  j["line"] = a.line;
+  j["length_ft"] = a.length_ft;
+  j["mean_tension_lbf"] = a.mean_tension_lbf;
+  j["tug_tow_point_height_ft"] = units::m_to_ft(r.points.tug_height_m);
+  j["tow_tow_point_height_ft"] = units::m_to_ft(r.points.tow_height_m);
+  ordered_json segs = ordered_json::array();
+  for (const auto& seg : r.line.segments) {
+    const auto& c = seg.component;
+    segs.push_back({{"component", c.name},
+                    {"kind", model::to_string(c.kind)},
+                    {"length_ft", units::m_to_ft(seg.length_m)},
+                    {"ea_lbf", units::n_to_lbf(c.ea_n)},
+                    {"weight_in_water_lb_per_ft", units::n_per_m_to_lbf_per_ft(c.weight_in_water_n_m)},
+                    {"breaking_strength_lbf", units::n_to_lbf(c.breaking_strength_n)}});
   }
+  j["segments"] = segs;
+  j["unstretched_length_ft"] = units::m_to_ft(s.unstretched_length_m);
+  j["span_ft"] = units::m_to_ft(s.span_m);
+  j["chord_ft"] = units::m_to_ft(s.chord_m);
+  j["sag_ft"] = units::m_to_ft(s.sag_m);
+  j["lowest_elevation_ft"] = units::m_to_ft(s.lowest_elevation_m);
+  j["end_angle_tug_deg"] = units::rad_to_deg(s.tug_angle_rad);
+  j["end_angle_tow_deg"] = units::rad_to_deg(s.tow_angle_rad);
+  j["end_tension_tug_lbf"] = units::n_to_lbf(s.tug_tension_n);
+  j["end_tension_tow_lbf"] = units::n_to_lbf(s.tow_tension_n);
+  j["static_stiffness_lbf_per_ft"] = units::n_per_m_to_lbf_per_ft(s.static_stiffness_n_m);
+  j["shallow_sag_static_stiffness_lbf_per_ft"] = units::n_per_m_to_lbf_per_ft(s.dynamic_static_stiffness_n_m);
+  j["straight_spring_lbf_per_ft"] = units::n_per_m_to_lbf_per_ft(s.straight_spring_n_m);
+  j["breaking_strength_lbf"] = units::n_to_lbf(s.breaking_strength_n);
+  j["spring_onset_extension_ft"] = units::m_to_ft(s.spring_onset_extension_m);
+  j["slack_limit_lbf"] = units::n_to_lbf(s.slack_limit_n);
+  ordered_json coef, coef_units, coef_si, coef_si_units;
+  for (int i = 0; i < towline::PolynomialCoefficients::kCount; ++i) {
+    const std::size_t k = static_cast<std::size_t>(i);
+    const int m = powers[k][0], n = powers[k][1];
+    coef[kCoefficientNames[k]] = coefficient_to_lbf_ft(s.coefficients.a[k], m, n);
+    coef_units[kCoefficientNames[k]] = coefficient_unit(m, n, "lbf", "ft");
+    coef_si[kCoefficientNames[k]] = s.coefficients.a[k];
+    coef_si_units[kCoefficientNames[k]] = coefficient_unit(m, n, "N", "m");
+  }
+  j["coefficients"] = coef;
+  j["coefficient_units"] = coef_units;
+  j["coefficients_si"] = coef_si;
+  j["coefficient_units_si"] = coef_si_units;
+  j["fit_rms_lbf"] = units::n_to_lbf(s.fit_rms_error_n);
+  j["fit_max_error_lbf"] = units::n_to_lbf(s.fit_max_error_n);
+  j["rms_tension_lbf"] = units::n_to_lbf(s.rms_tension_n);
+  j["small_motion_ratio"] = s.small_motion_ratio;
+  j["run_weight_exponent"] = s.run_weight_exponent;
+  j["samples_used"] = s.samples_used;
+  j["samples_excluded"] = s.samples_excluded;
+  j["fitted_range"] = {{"xi_min_ft", units::m_to_ft(s.fit_xi_min_m)},
+                       {"xi_max_ft", units::m_to_ft(s.fit_xi_max_m)},
+                       {"xi_dot_max_ft_s", units::m_to_ft(s.fit_xi_dot_max_m_s)}};
+  j["resolution"] = {{"elements", s.n_elements},
+                     {"steps_per_period", s.steps_per_period},
+                     {"steps_per_line_period", s.steps_per_line_period},
+                     {"min_dt_s", s.min_dt_s},
+                     {"max_dt_s", s.max_dt_s},
+                     {"space_resolution_change", s.space_resolution_change},
+                     {"time_resolution_change", s.time_resolution_change},
+                     {"criterion", r.resolution_tolerance},
+                     {"probes_left_out", s.resolution_probes_left_out}};
+  j["runs"] = s.runs;
+  j["runs_not_periodic"] = s.runs_not_periodic;
+  j["runtime_s"] = r.runtime_s;
+  std::cout << j.dump(2) << "\n";
+}
 
-  std::cout << tug.name << " " << a.line << " hawser, " << fmt(a.length_ft, 0) << " ft (+ pendant), to " << tow.name
+void print_towline_text(const TowlineArgs& a, const TowlineReport& r) {
+  const towline::FitSummary& s = r.s;
+  const auto& powers = towline::PolynomialCoefficients::kPowers;
+  std::cout << r.tug.name << " " << a.line << " hawser, " << fmt(a.length_ft, 0) << " ft (+ pendant), to " << r.tow.name
             << ", mean tension " << fmt_grouped(a.mean_tension_lbf) << " lbf\n\n";
   TextTable seg({"segment (tug -> tow)", "kind", "length ft", "EA lbf", "wet weight lb/ft", "breaking lbf"});
-  for (const auto& sg : line.segments) {
+  for (const auto& sg : r.line.segments) {
     const auto& c = sg.component;
     seg.add_row({c.name, model::to_string(c.kind), fmt(units::m_to_ft(sg.length_m), 1),
                  fmt_grouped(units::n_to_lbf(c.ea_n)), fmt(units::n_per_m_to_lbf_per_ft(c.weight_in_water_n_m), 3),
                  fmt_grouped(units::n_to_lbf(c.breaking_strength_n))});
   }
   seg.print(std::cout);
-  std::cout << "\nstatic geometry (elastic catenary, tow points " << fmt(units::m_to_ft(points.tug_height_m), 1)
-            << " ft and " << fmt(units::m_to_ft(points.tow_height_m), 1) << " ft above the waterline)\n";
+  std::cout << "\nstatic geometry (elastic catenary, tow points " << fmt(units::m_to_ft(r.points.tug_height_m), 1)
+            << " ft and " << fmt(units::m_to_ft(r.points.tow_height_m), 1) << " ft above the waterline)\n";
   TextTable g({"quantity", "value"});
   g.add_row({"span", fmt(units::m_to_ft(s.span_m), 1) + " ft"});
   g.add_row({"sag below the chord", fmt(units::m_to_ft(s.sag_m), 2) + " ft"});
@@ -200,13 +208,33 @@ int run_towline(const Context& ctx, const TowlineArgs& a) {
   std::cout << "resolution: " << s.n_elements << " elements (change N -> 2N " << fmt(100.0 * s.space_resolution_change, 2)
             << " %), " << s.steps_per_period << " steps per period (change dt -> dt/2 "
             << fmt(100.0 * s.time_resolution_change, 2) << " %); criterion "
-            << fmt(100.0 * options.resolution_tolerance, 1) << " %; " << s.runs << " runs, " << s.runs_not_periodic
+            << fmt(100.0 * r.resolution_tolerance, 1) << " %; " << s.runs << " runs, " << s.runs_not_periodic
             << " not periodic";
   if (s.resolution_probes_left_out > 0) {
     std::cout << "; " << s.resolution_probes_left_out
               << " probe runs that never became periodic left out of the resolution criterion";
   }
-  std::cout << "; " << fmt(runtime_s, 2) << " s\n";
+  std::cout << "; " << fmt(r.runtime_s, 2) << " s\n";
+}
+
+int run_towline(const Context& ctx, const TowlineArgs& a) {
+  const io::ShipCatalog cat = load_catalog(ctx);
+  const model::Vessel& tug = cat.vessel(a.tug).vessel;
+  const model::Vessel& tow = cat.vessel(a.tow).vessel;
+  const model::Towline line = checked_towline(cat, tug, tow, a);
+  const double mean_n = units::lbf_to_n(a.mean_tension_lbf);
+  const towline::TowPoints points{tug.tow_point.z_m, tow.tow_point.z_m};
+  towline::TowlineFitOptions options;
+  options.num_threads = a.threads;
+  const auto start = std::chrono::steady_clock::now();
+  const std::shared_ptr<const towline::TowlineFit> fit = towline::build_towline_fit(line, points, mean_n, options);
+  const double runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const TowlineReport report{tug, tow, line, points, fit->summary(), options.resolution_tolerance, runtime_s};
+  if (a.json) {
+    print_towline_json(a, report);
+  } else {
+    print_towline_text(a, report);
+  }
   return 0;
 }
 

@@ -10,8 +10,6 @@
 //   scatter.png log-log scatter of ours vs thesis (gnuplot)
 //   run-signature.txt  the options and a hash of the ship files; a journal
 //               written under another signature is refused (no silent mixing)
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,6 +23,7 @@
 
 #include "cli.hpp"
 #include "common/error.hpp"
+#include "common/progress.hpp"
 #include "output.hpp"
 #include "plot.hpp"
 #include "sweep/calibration.hpp"
@@ -179,11 +178,8 @@ void write_scatter_plot(const fs::path& png, const std::vector<validation::CaseO
   run_gnuplot_with_data(s.str(), dir);
 }
 
-int run_validate(const Context& ctx, const ValidateArgs& a) {
-  check_output_dir("--out", a.out_dir);
-  const io::ShipCatalog catalog = load_catalog(ctx);
-  std::vector<sweep::CalibrationRow> rows =
-      sweep::parse_calibration_csv(read_text(a.cases_path), a.cases_path, catalog);
+// The calibration rows selected by --filter and --max-cases (at least one).
+std::vector<sweep::CalibrationRow> select_rows(std::vector<sweep::CalibrationRow> rows, const ValidateArgs& a) {
   if (!a.filters.empty()) {
     std::vector<sweep::CalibrationRow> kept;
     for (const auto& r : rows) {
@@ -197,7 +193,10 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
     rows.resize(static_cast<std::size_t>(a.max_cases));
   }
   if (rows.empty()) throw InputError("no cases selected (check --filter / --max-cases)");
+  return rows;
+}
 
+validation::RunOptions run_options(const ValidateArgs& a) {
   validation::RunOptions options;
   options.days_scale = a.days_scale;
   options.min_days = a.min_days;
@@ -212,14 +211,17 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
   options.linear_non_surge_tension = a.linear_non_surge_tension;
   options.nonnegative_wave_damping = a.nonnegative_wave_damping;
   options.validate();
+  return options;
+}
 
-  const fs::path out(a.out_dir);
-  fs::create_directories(out);
+// The cases an earlier run journalled in `out` under the same signature (none
+// with --fresh); a journal of another signature is refused. Writes the
+// signature and rewrites the journal cleanly (drops a half-written last line) for appending.
+std::vector<validation::CaseOutcome> resume_journal(const fs::path& out, const std::string& signature, bool fresh) {
   const fs::path journal = out / "cases.csv";
   const fs::path signature_file = out / "run-signature.txt";
-  const std::string signature = run_signature(options, catalog);
   std::vector<validation::CaseOutcome> done;
-  if (!a.fresh && fs::exists(journal)) {
+  if (!fresh && fs::exists(journal)) {
     if (!fs::exists(signature_file) || read_text(signature_file) != signature) {
       throw InputError("--out " + out.string() + " holds cases computed with other options or ship files (" +
                        signature_file.string() + "); use another --out or --fresh");
@@ -227,14 +229,15 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
     done = validation::parse_journal(read_text(journal));
   }
   write_atomically(signature_file, signature);
-  {
-    // Rewrite the journal cleanly (drops a half-written last line), then append.
-    std::string text = validation::journal_header() + "\n";
-    for (const auto& c : done) text += validation::journal_line(c) + "\n";
-    write_atomically(journal, text);
-  }
-  std::ofstream append(journal, std::ios::app);
+  std::string text = validation::journal_header() + "\n";
+  for (const auto& c : done) text += validation::journal_line(c) + "\n";
+  write_atomically(journal, text);
+  return done;
+}
 
+// How many of `rows` the journal already holds (same case, same simulated days).
+int count_reused(const std::vector<sweep::CalibrationRow>& rows, const std::vector<validation::CaseOutcome>& done,
+                 const validation::RunOptions& options) {
   int reused = 0;
   for (const auto& r : rows) {
     const int days = validation::simulated_days(r, options);
@@ -245,55 +248,52 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
       }
     }
   }
-  const bool tty = isatty(STDERR_FILENO) != 0;
-  std::cerr << "validate: " << rows.size() << " cases (" << reused << " from " << journal.string()
-            << "), days scale " << fmt(a.days_scale) << ", " << a.threads << " thread(s)\n";
-  const auto start = std::chrono::steady_clock::now();
-  int computed = 0;
-  const int to_compute = static_cast<int>(rows.size()) - reused;
-  const auto on_outcome = [&](const validation::CaseOutcome& c, int finished, int total) {
-    append << validation::journal_line(c) << "\n" << std::flush;
-    ++computed;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double eta = elapsed * (to_compute - computed) / computed;
-    const std::string what = c.status == validation::CaseStatus::kOk
-                                 ? "ratio " + fmt(c.ratio(), 2)
-                                 : "FAILED: " + c.error;
-    if (tty) {
-      const int width = 30;
-      const int filled = width * finished / total;
-      std::fprintf(stderr, "\r  [%s%s] %d/%d cases  %.0f s elapsed  ETA %.0f s  case %d %s\033[K",
-                   std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                   std::string(static_cast<std::size_t>(width - filled), '.').c_str(), finished, total, elapsed, eta,
-                   c.row.case_number, what.substr(0, 60).c_str());
-      if (finished == total) std::fprintf(stderr, "\n");
-    } else {
-      std::cerr << "  " << finished << "/" << total << " case " << c.row.case_number << " " << c.row.tug << "/"
-                << c.row.tow << " " << fmt(c.row.heading_deg, 0) << " deg " << c.row.line << ": thesis "
-                << fmt(c.row.dynamic_999_kips, 1) << " kips, ours " << fmt(c.ours_kips, 1) << " (" << what << ", "
-                << c.days_run << " days, " << fmt(c.runtime_s, 1) << " s)\n";
-    }
-  };
-  std::vector<validation::CaseOutcome> outcomes = validation::run_all(rows, catalog, options, done, on_outcome);
-  append.close();
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return reused;
+}
 
-  // Final journal: this run's cases in input order, then earlier cases not selected now.
-  {
-    std::set<int> selected;
-    for (const auto& r : rows) selected.insert(r.case_number);
-    std::string text = validation::journal_header() + "\n";
-    for (const auto& c : outcomes) text += validation::journal_line(c) + "\n";
-    std::set<int> kept;
-    for (const auto& d : done) {
-      if (!selected.count(d.row.case_number) && kept.insert(d.row.case_number).second) {
-        text += validation::journal_line(d) + "\n";
-      }
-    }
-    write_atomically(journal, text);
+// One finished case on stderr: a progress bar on a terminal, a line otherwise.
+void report_case(const validation::CaseOutcome& c, int finished, int total, double elapsed, double eta,
+                 const ProgressLine& line) {
+  const std::string what = c.status == validation::CaseStatus::kOk
+                               ? "ratio " + fmt(c.ratio(), 2)
+                               : "FAILED: " + c.error;
+  if (line.enabled()) {
+    const int width = 30;
+    const int filled = width * finished / total;
+    char text[512];
+    std::snprintf(text, sizeof text, "  [%s] %d/%d cases  %.0f s elapsed  ETA %.0f s  case %d %s",
+                  ProgressLine::bar(filled, width, '.').c_str(), finished, total, elapsed, eta, c.row.case_number,
+                  what.substr(0, 60).c_str());
+    line.draw(text, finished == total);
+  } else {
+    std::cerr << "  " << finished << "/" << total << " case " << c.row.case_number << " " << c.row.tug << "/"
+              << c.row.tow << " " << fmt(c.row.heading_deg, 0) << " deg " << c.row.line << ": thesis "
+              << fmt(c.row.dynamic_999_kips, 1) << " kips, ours " << fmt(c.ours_kips, 1) << " (" << what << ", "
+              << c.days_run << " days, " << fmt(c.runtime_s, 1) << " s)\n";
   }
+}
 
-  const validation::Report report = validation::make_report(outcomes);
+// The final journal: this run's cases in input order, then earlier cases not
+// selected now.
+void write_final_journal(const fs::path& journal, const std::vector<sweep::CalibrationRow>& rows,
+                         const std::vector<validation::CaseOutcome>& outcomes,
+                         const std::vector<validation::CaseOutcome>& done) {
+  std::set<int> selected;
+  for (const auto& r : rows) selected.insert(r.case_number);
+  std::string text = validation::journal_header() + "\n";
+  for (const auto& c : outcomes) text += validation::journal_line(c) + "\n";
+  std::set<int> kept;
+  for (const auto& d : done) {
+    if (!selected.count(d.row.case_number) && kept.insert(d.row.case_number).second) {
+      text += validation::journal_line(d) + "\n";
+    }
+  }
+  write_atomically(journal, text);
+}
+
+// The report's note on how the run was made: the command line and the times.
+std::string run_note(const ValidateArgs& a, const std::vector<validation::CaseOutcome>& outcomes, double wall_s,
+                     int reused) {
   double case_time_s = 0.0;
   for (const auto& c : outcomes) case_time_s += c.runtime_s;
   std::ostringstream note;
@@ -312,18 +312,13 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
   note << "`. Simulated days per case = max(" << a.min_days << ", round(" << fmt(a.days_scale)
        << " x thesis days)); seed = thesis case number. Sum of case run times " << fmt(case_time_s, 0)
        << " s (this invocation: " << fmt(wall_s, 0) << " s wall, " << reused << " cases reused from the journal).";
-  write_atomically(out / "report.md", validation::report_markdown(report, note.str()));
-  if (!a.no_plot) {
-    try {
-      write_scatter_plot(out / "scatter.png", outcomes);
-    } catch (const std::exception& e) {
-      std::cerr << "validate: warning: no plot: " << e.what() << "\n";
-    }
-  }
+  return note.str();
+}
 
+// The summary table on stdout against the targets.
+void print_summary(const validation::Report& report, std::size_t cases, const fs::path& report_path) {
   const auto& v = report.valid;
-  std::cout << "Validation against thesis Appendix C: " << outcomes.size() << " cases, " << report.failed
-            << " failed\n\n";
+  std::cout << "Validation against thesis Appendix C: " << cases << " cases, " << report.failed << " failed\n\n";
   TextTable t({"cases <= 300 kips", "value", "target"});
   t.add_row({"count", std::to_string(v.count), ""});
   t.add_row({"median ratio (ours / thesis)", fmt(v.median_ratio, 3),
@@ -337,7 +332,51 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
              report.above_limit.count > 0 ? fmt(report.above_limit.median_ratio, 3) : "-",
              std::to_string(report.above_limit.count) + " cases"});
   t.print(std::cout);
-  std::cout << "\nreport: " << (out / "report.md").string() << "\n";
+  std::cout << "\nreport: " << report_path.string() << "\n";
+}
+
+int run_validate(const Context& ctx, const ValidateArgs& a) {
+  check_output_dir("--out", a.out_dir);
+  const io::ShipCatalog catalog = load_catalog(ctx);
+  const std::vector<sweep::CalibrationRow> rows =
+      select_rows(sweep::parse_calibration_csv(read_text(a.cases_path), a.cases_path, catalog), a);
+  const validation::RunOptions options = run_options(a);
+
+  const fs::path out(a.out_dir);
+  fs::create_directories(out);
+  const fs::path journal = out / "cases.csv";
+  const std::vector<validation::CaseOutcome> done = resume_journal(out, run_signature(options, catalog), a.fresh);
+  std::ofstream append(journal, std::ios::app);
+
+  const int reused = count_reused(rows, done, options);
+  const ProgressLine progress(true);
+  std::cerr << "validate: " << rows.size() << " cases (" << reused << " from " << journal.string()
+            << "), days scale " << fmt(a.days_scale) << ", " << a.threads << " thread(s)\n";
+  const auto start = std::chrono::steady_clock::now();
+  int computed = 0;
+  const int to_compute = static_cast<int>(rows.size()) - reused;
+  const auto on_outcome = [&](const validation::CaseOutcome& c, int finished, int total) {
+    append << validation::journal_line(c) << "\n" << std::flush;
+    ++computed;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double eta = elapsed * (to_compute - computed) / computed;
+    report_case(c, finished, total, elapsed, eta, progress);
+  };
+  std::vector<validation::CaseOutcome> outcomes = validation::run_all(rows, catalog, options, done, on_outcome);
+  append.close();
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_final_journal(journal, rows, outcomes, done);
+
+  const validation::Report report = validation::make_report(outcomes);
+  write_atomically(out / "report.md", validation::report_markdown(report, run_note(a, outcomes, wall_s, reused)));
+  if (!a.no_plot) {
+    try {
+      write_scatter_plot(out / "scatter.png", outcomes);
+    } catch (const std::exception& e) {
+      std::cerr << "validate: warning: no plot: " << e.what() << "\n";
+    }
+  }
+  print_summary(report, outcomes.size(), out / "report.md");
   return report.failed == static_cast<int>(outcomes.size()) ? 1 : 0;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "common/error.hpp"
@@ -19,24 +20,6 @@ using query::QueryResult;
 
 constexpr double kLbfPerKip = 1000.0;
 constexpr double kPolarStepDeg = 5.0;  // plot (b): one point every 5 deg, 73 points over 0-360
-
-QueryRequest to_request(const PlanQuestion& q) {
-  QueryRequest r;
-  r.tug = q.tug;
-  r.tow = q.tow;
-  r.line = q.line;
-  r.values.speed_kt = q.speed_kt;
-  r.values.wind_kt = q.wind_kt;
-  r.values.hs_ft = q.hs_ft;
-  r.values.tp_s = q.tp_s;
-  r.values.heading_deg = q.heading_deg;
-  r.values.length_ft = q.length_ft;
-  r.values.mean_tension_lbf = q.mean_tension_lbf;
-  r.values.probability = q.probability;
-  r.values.tow_days = q.tow_days;
-  r.values.on_brake = q.brake ? 1 : 0;
-  return r;
-}
 
 // A library error that is the question's (bad input, outside the data) is an
 // InputError (exit 2); anything else is a failure (exit 1).
@@ -154,6 +137,33 @@ ordered_json curve_json(const PlanCurve& c, const char* x_key, const char* limit
 }
 
 }  // namespace
+
+query::QueryRequest to_request(const PlanQuestion& q) {
+  query::QueryRequest r;
+  r.tug = q.tug;
+  r.tow = q.tow;
+  r.line = q.line;
+  r.values.speed_kt = q.speed_kt;
+  r.values.wind_kt = q.wind_kt;
+  r.values.hs_ft = q.hs_ft;
+  r.values.tp_s = q.tp_s;
+  r.values.heading_deg = q.heading_deg;
+  r.values.length_ft = q.length_ft;
+  r.values.mean_tension_lbf = q.mean_tension_lbf;
+  r.values.probability = q.probability;
+  r.values.tow_days = q.tow_days;
+  r.values.on_brake = q.brake ? 1 : 0;
+  return r;
+}
+
+std::unique_ptr<query::Database> open_plan_database(const std::string& path) {
+  try {
+    return std::make_unique<query::Database>(path);
+  } catch (const query::QueryError& e) {
+    if (e.is_input()) throw InputError("--db = " + path + ": " + e.what());
+    throw;
+  }
+}
 
 Plan make_plan(query::Database& db, const PlanQuestion& q) {
   Plan p;

@@ -26,8 +26,10 @@
 #include <pybind11/stl.h>
 
 #include "towdb/query.h"
+#include "towdb/query.hpp"
 
 namespace py = pybind11;
+using towdb::query::warning_kind_name;
 
 namespace {
 
@@ -90,19 +92,7 @@ py::object make_exception(py::module_& m, const char* name, py::tuple bases, con
 // ---- request ------------------------------------------------------------------
 
 // A request with its strings owned here (the C request points into them).
-struct Question {
-  std::string tug, tow, line, spectrum;
-  towdb_query_request values{};
-  Question() { towdb_query_request_init(&values); }
-  towdb_query_request c_request() const {
-    towdb_query_request r = values;
-    r.tug = tug.c_str();
-    r.tow = tow.c_str();
-    r.line = line.c_str();
-    r.spectrum = spectrum.empty() ? nullptr : spectrum.c_str();
-    return r;
-  }
-};
+using Question = towdb::query::QueryRequest;
 
 std::string repr_text(const py::handle& v) { return py::repr(v).cast<std::string>(); }
 
@@ -181,20 +171,6 @@ Question to_question(const py::dict& d, const std::vector<std::string>& needs) {
 }
 
 // ---- answers -------------------------------------------------------------------
-
-const char* warning_kind_name(int kind) {
-  switch (kind) {
-    case TOWDB_QUERY_WARN_EXTRAPOLATED: return "extrapolated";
-    case TOWDB_QUERY_WARN_ABOVE_BREAKING: return "above_breaking_strength";
-    case TOWDB_QUERY_WARN_SLACK: return "slack_prone";
-    case TOWDB_QUERY_WARN_NOT_MONOTONE: return "not_monotone";
-    case TOWDB_QUERY_WARN_INCOMPLETE_GRID: return "incomplete_grid";
-    case TOWDB_QUERY_WARN_HIGH_TENSION: return "high_tension";
-    case TOWDB_QUERY_WARN_BREAKING_DIFFERS: return "breaking_strength_differs";
-    case TOWDB_QUERY_WARN_ABOVE_CAPACITY: return "above_tug_capacity";
-    default: return "other";
-  }
-}
 
 py::object nullable(double v) { return std::isfinite(v) ? py::object(py::float_(v)) : py::none(); }
 

@@ -100,12 +100,164 @@ struct StripData {
   double mean_draft_m = 0.0;  // A / B for the Smith correction (EQ-AR-1)
 };
 
+// Sections (EQ-SECTION-*), at |w_h|; a, b are real so the impedance with the
+// signed w is the correct one for w_e < 0 (EQ-SECTION-11).
+std::vector<StripData> section_strips(const std::vector<model::Station>& st, double w_abs, double w, double k,
+                                      double omega, double sin_mu, int sign, const ResponseOptions& options) {
+  const std::size_t n = st.size();
+  std::vector<StripData> strips(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const model::Station& s = st[i];
+    if (!has_section(s)) continue;
+    const SectionSolution sol =
+        solve_lewis_section(s.beam_m, s.draft_m, s.area_coefficient, w_abs, options.section);
+    const SectionCoefficients& c = sol.coefficients;
+    Eigen::Matrix3d a;
+    Eigen::Matrix3d b;
+    a << c.a22, 0.0, c.a24, 0.0, c.a33, 0.0, c.a42, 0.0, c.a44;
+    b << c.b22, 0.0, c.b24, 0.0, c.b33, 0.0, c.b42, 0.0, c.b44;
+    strips[i].impedance = a.cast<Complex>() + b.cast<Complex>() / (kI * w);
+    strips[i].a33 = c.a33;
+    strips[i].b33 = c.b33;
+    strips[i].loads = section_wave_loads(sol, k, omega, sin_mu, sign);
+    strips[i].mean_draft_m = s.area_coefficient * s.draft_m;
+  }
+  return strips;
+}
+
+// What the strip integrals of one wave frequency share.
+struct StripFrame {
+  const std::vector<model::Station>& st;
+  const std::vector<double>& wx;        // trapezoid weights over the stations
+  const std::vector<StripData>& strips;
+  double omega;     // wave frequency [rad/s]
+  double w;         // hydrodynamic (floored, signed) encounter frequency [rad/s]
+  double k;         // wavenumber [rad/m]
+  double cos_mu;
+  double u;         // speed [m/s]
+  bool transom;     // transom terms at the aft station
+  double x_aft;     // x of the aft station [m]
+};
+
+// Radiation: K_ij = int (i w c_i + U c_i') Z (i w c_j - U c_j') dx
+//                 + U c_i(x_A) Z_A (i w c_j(x_A) - U c_j')   (EQ-STRIP-2, -3),
+// stored as added mass -Re K / w^2 and damping Im K / w.
+void add_radiation(const StripFrame& f, VesselResponse& r) {
+  const std::size_t n = f.st.size();
+  const std::size_t aft = 0;
+  const double w = f.w, u = f.u;
+  Eigen::Matrix<Complex, 6, 6> kmat = Eigen::Matrix<Complex, 6, 6>::Zero();
+  for (const StripMode& mi : kStripModes) {
+    for (const StripMode& mj : kStripModes) {
+      Complex sum(0.0, 0.0);
+      for (std::size_t s = 0; s < n; ++s) {
+        const double x = f.st[s].x_m;
+        const Complex z = f.strips[s].impedance(mi.section_mode, mj.section_mode);
+        if (z == Complex(0.0, 0.0)) continue;
+        const Complex left = kI * w * (mi.c0 + mi.c1 * x) + u * mi.c1;
+        const Complex right = kI * w * (mj.c0 + mj.c1 * x) - u * mj.c1;
+        sum += f.wx[s] * left * z * right;
+      }
+      if (f.transom) {
+        const Complex z = f.strips[aft].impedance(mi.section_mode, mj.section_mode);
+        const Complex right = kI * w * (mj.c0 + mj.c1 * f.x_aft) - u * mj.c1;
+        sum += u * (mi.c0 + mi.c1 * f.x_aft) * z * right;
+      }
+      kmat(mi.dof, mj.dof) = sum;
+    }
+  }
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j < 6; ++j) {
+      r.added_mass(i, j) = -kmat(i, j).real() / (w * w);
+      r.damping(i, j) = kmat(i, j).imag() / w;
+    }
+  }
+}
+
+// Exciting forces per wave amplitude, Froude-Krylov and diffraction
+// (EQ-STRIP-4, EQ-STRIP-7).
+void add_exciting_forces(const StripFrame& f, VesselResponse& r) {
+  const std::size_t n = f.st.size();
+  const std::size_t aft = 0;
+  const double w = f.w, u = f.u, k = f.k, cos_mu = f.cos_mu;
+  const double rho_g = kRhoSeawater_kg_m3 * kGravity_m_s2;
+  for (const StripMode& mi : kStripModes) {
+    Complex fk(0.0, 0.0);
+    Complex dif(0.0, 0.0);
+    for (std::size_t s = 0; s < n; ++s) {
+      const double x = f.st[s].x_m;
+      const Complex phase = std::exp(Complex(0.0, -k * x * cos_mu));
+      const double c = mi.c0 + mi.c1 * x;
+      fk += f.wx[s] * c * f.strips[s].loads.froude_krylov_n_m[static_cast<std::size_t>(mi.section_mode)] * phase;
+      dif += f.wx[s] * (kI * w * c + u * mi.c1) *
+             f.strips[s].loads.diffraction_momentum_n_s_m[static_cast<std::size_t>(mi.section_mode)] * phase;
+    }
+    if (f.transom) {
+      const Complex phase = std::exp(Complex(0.0, -k * f.x_aft * cos_mu));
+      dif += u * (mi.c0 + mi.c1 * f.x_aft) *
+             f.strips[aft].loads.diffraction_momentum_n_s_m[static_cast<std::size_t>(mi.section_mode)] * phase;
+    }
+    r.froude_krylov_per_m(mi.dof) = fk;
+    r.diffraction_per_m(mi.dof) = dif;
+  }
+  Complex volume(0.0, 0.0);
+  for (std::size_t s = 0; s < n; ++s) {
+    volume += f.wx[s] * f.strips[s].loads.weighted_area_m2 * std::exp(Complex(0.0, -k * f.st[s].x_m * cos_mu));
+  }
+  r.froude_krylov_per_m(kSurge) = kI * k * cos_mu * rho_g * volume;
+  // The z n_1 part of n_5 (Gauss: -int p z n_1 dS = i k cos mu int z p dV):
+  // it makes the long-wave pitch equal the wave slope (EQ-STRIP-7).
+  Complex moment(0.0, 0.0);
+  for (std::size_t s = 0; s < n; ++s) {
+    moment += f.wx[s] * f.strips[s].loads.weighted_first_moment_m3 * std::exp(Complex(0.0, -k * f.st[s].x_m * cos_mu));
+  }
+  r.froude_krylov_per_m(kPitch) += kI * k * cos_mu * rho_g * moment;
+  r.exciting_force_per_m = r.froude_krylov_per_m + r.diffraction_per_m;
+}
+
+// Motions (EQ-STRIP-9): the RAOs of the 6x6 system at the hydrodynamic frequency w.
+void solve_motions(double w, VesselResponse& r) {
+  const Eigen::Matrix<Complex, 6, 6> system =
+      (-w * w * (r.mass + r.added_mass) + r.restoring).cast<Complex>() + kI * w * r.damping.cast<Complex>();
+  Eigen::FullPivLU<Eigen::Matrix<Complex, 6, 6>> lu(system);
+  if (!lu.isInvertible()) {
+    throw NumericalError("strip theory motion equations: iteration 1, singular 6x6 system at w_e = " +
+                         format_value(w) + " rad/s (residual rank " + std::to_string(lu.rank()) + ")");
+  }
+  r.rao = lu.solve(r.exciting_force_per_m);
+  if (!r.rao.allFinite()) {
+    throw NumericalError("strip theory motion equations: iteration 1, non-finite RAO at w_e = " +
+                         format_value(w) + " rad/s");
+  }
+}
+
+// Added resistance per wave amplitude squared (EQ-AR-1): b'33 = b33 - U da33/dx
+// by central differences.
+double added_resistance_n_per_m2(const StripFrame& f, const VesselResponse& r) {
+  const std::size_t n = f.st.size();
+  const double w = f.w, u = f.u, k = f.k, cos_mu = f.cos_mu;
+  double integral = 0.0;
+  const Complex heave = r.rao(kHeave);
+  const Complex pitch = r.rao(kPitch);
+  for (std::size_t s = 0; s < n; ++s) {
+    if (!has_section(f.st[s])) continue;
+    const std::size_t lo = s == 0 ? 0 : s - 1;
+    const std::size_t hi = s + 1 == n ? s : s + 1;
+    const double da_dx = (f.strips[hi].a33 - f.strips[lo].a33) / (f.st[hi].x_m - f.st[lo].x_m);
+    const double b_eff = f.strips[s].b33 - u * da_dx;
+    const double x = f.st[s].x_m;
+    const Complex wave = std::exp(Complex(-k * f.strips[s].mean_draft_m, -k * x * cos_mu));
+    const Complex vz = kI * w * (heave - x * pitch) + u * pitch - kI * f.omega * wave;
+    integral += f.wx[s] * b_eff * std::norm(vz);
+  }
+  return -k * cos_mu / (2.0 * w) * integral;
+}
+
 VesselResponse respond(const model::Vessel& vessel, double speed, double heading, double omega,
                        const ResponseOptions& options, const Matrix6d& mass,
                        const Matrix6d& restoring) {
   const model::Hull& hull = vessel.hull;
   const auto& st = hull.stations;
-  const std::size_t n = st.size();
   const std::vector<double> wx = trapezoid_weights(st);
 
   VesselResponse r;
@@ -126,98 +278,16 @@ VesselResponse respond(const model::Vessel& vessel, double speed, double heading
   r.mass = mass;
   r.restoring = restoring;
 
-  // Sections (EQ-SECTION-*), at |w_h|; a, b are real so the impedance with the
-  // signed w is the correct one for w_e < 0 (EQ-SECTION-11).
-  std::vector<StripData> strips(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const model::Station& s = st[i];
-    if (!has_section(s)) continue;
-    const SectionSolution sol =
-        solve_lewis_section(s.beam_m, s.draft_m, s.area_coefficient, w_abs, options.section);
-    const SectionCoefficients& c = sol.coefficients;
-    Eigen::Matrix3d a;
-    Eigen::Matrix3d b;
-    a << c.a22, 0.0, c.a24, 0.0, c.a33, 0.0, c.a42, 0.0, c.a44;
-    b << c.b22, 0.0, c.b24, 0.0, c.b33, 0.0, c.b42, 0.0, c.b44;
-    strips[i].impedance = a.cast<Complex>() + b.cast<Complex>() / (kI * w);
-    strips[i].a33 = c.a33;
-    strips[i].b33 = c.b33;
-    strips[i].loads = section_wave_loads(sol, k, omega, sin_mu, sign);
-    strips[i].mean_draft_m = s.area_coefficient * s.draft_m;
-  }
+  const std::vector<StripData> strips = section_strips(st, w_abs, w, k, omega, sin_mu, sign, options);
+  const StripFrame frame{st,     wx,  strips,
+                         omega,  w,   k,
+                         cos_mu, speed, options.transom_terms && has_section(st[0]),
+                         st[0].x_m};
 
-  const double u = speed;
-  const std::size_t aft = 0;
-  const double x_aft = st[aft].x_m;
-  const bool transom = options.transom_terms && has_section(st[aft]);
-
-  // Radiation: K_ij = int (i w c_i + U c_i') Z (i w c_j - U c_j') dx
-  //                 + U c_i(x_A) Z_A (i w c_j(x_A) - U c_j')   (EQ-STRIP-2, -3).
-  Eigen::Matrix<Complex, 6, 6> kmat = Eigen::Matrix<Complex, 6, 6>::Zero();
-  for (const StripMode& mi : kStripModes) {
-    for (const StripMode& mj : kStripModes) {
-      Complex sum(0.0, 0.0);
-      for (std::size_t s = 0; s < n; ++s) {
-        const double x = st[s].x_m;
-        const Complex z = strips[s].impedance(mi.section_mode, mj.section_mode);
-        if (z == Complex(0.0, 0.0)) continue;
-        const Complex left = kI * w * (mi.c0 + mi.c1 * x) + u * mi.c1;
-        const Complex right = kI * w * (mj.c0 + mj.c1 * x) - u * mj.c1;
-        sum += wx[s] * left * z * right;
-      }
-      if (transom) {
-        const Complex z = strips[aft].impedance(mi.section_mode, mj.section_mode);
-        const Complex right = kI * w * (mj.c0 + mj.c1 * x_aft) - u * mj.c1;
-        sum += u * (mi.c0 + mi.c1 * x_aft) * z * right;
-      }
-      kmat(mi.dof, mj.dof) = sum;
-    }
-  }
-  for (int i = 0; i < 6; ++i) {
-    for (int j = 0; j < 6; ++j) {
-      r.added_mass(i, j) = -kmat(i, j).real() / (w * w);
-      r.damping(i, j) = kmat(i, j).imag() / w;
-    }
-  }
+  add_radiation(frame, r);
   // Surge (EQ-STRIP-7).
   r.added_mass(kSurge, kSurge) = hull.surge_added_mass_ratio * hull.displacement_kg;
-
-  // Exciting forces (EQ-STRIP-4, EQ-STRIP-7).
-  const double rho_g = kRhoSeawater_kg_m3 * kGravity_m_s2;
-  for (const StripMode& mi : kStripModes) {
-    Complex fk(0.0, 0.0);
-    Complex dif(0.0, 0.0);
-    for (std::size_t s = 0; s < n; ++s) {
-      const double x = st[s].x_m;
-      const Complex phase = std::exp(Complex(0.0, -k * x * cos_mu));
-      const double c = mi.c0 + mi.c1 * x;
-      fk += wx[s] * c * strips[s].loads.froude_krylov_n_m[static_cast<std::size_t>(mi.section_mode)] * phase;
-      dif += wx[s] * (kI * w * c + u * mi.c1) *
-             strips[s].loads.diffraction_momentum_n_s_m[static_cast<std::size_t>(mi.section_mode)] * phase;
-    }
-    if (transom) {
-      const Complex phase = std::exp(Complex(0.0, -k * x_aft * cos_mu));
-      dif += u * (mi.c0 + mi.c1 * x_aft) *
-             strips[aft].loads.diffraction_momentum_n_s_m[static_cast<std::size_t>(mi.section_mode)] * phase;
-    }
-    r.froude_krylov_per_m(mi.dof) = fk;
-    r.diffraction_per_m(mi.dof) = dif;
-  }
-  {
-    Complex volume(0.0, 0.0);
-    for (std::size_t s = 0; s < n; ++s) {
-      volume += wx[s] * strips[s].loads.weighted_area_m2 * std::exp(Complex(0.0, -k * st[s].x_m * cos_mu));
-    }
-    r.froude_krylov_per_m(kSurge) = kI * k * cos_mu * rho_g * volume;
-    // The z n_1 part of n_5 (Gauss: -int p z n_1 dS = i k cos mu int z p dV):
-    // it makes the long-wave pitch equal the wave slope (EQ-STRIP-7).
-    Complex moment(0.0, 0.0);
-    for (std::size_t s = 0; s < n; ++s) {
-      moment += wx[s] * strips[s].loads.weighted_first_moment_m3 * std::exp(Complex(0.0, -k * st[s].x_m * cos_mu));
-    }
-    r.froude_krylov_per_m(kPitch) += kI * k * cos_mu * rho_g * moment;
-  }
-  r.exciting_force_per_m = r.froude_krylov_per_m + r.diffraction_per_m;
+  add_exciting_forces(frame, r);
 
   // Roll viscous damping (EQ-STRIP-8).
   const double c44 = restoring(kRoll, kRoll);
@@ -226,36 +296,8 @@ VesselResponse respond(const model::Vessel& vessel, double speed, double heading
     r.damping(kRoll, kRoll) += 2.0 * hull.roll_damping_ratio * std::sqrt(i44 * c44);
   }
 
-  // Motions (EQ-STRIP-9).
-  const Eigen::Matrix<Complex, 6, 6> system =
-      (-w * w * (r.mass + r.added_mass) + r.restoring).cast<Complex>() + kI * w * r.damping.cast<Complex>();
-  Eigen::FullPivLU<Eigen::Matrix<Complex, 6, 6>> lu(system);
-  if (!lu.isInvertible()) {
-    throw NumericalError("strip theory motion equations: iteration 1, singular 6x6 system at w_e = " +
-                         format_value(w) + " rad/s (residual rank " + std::to_string(lu.rank()) + ")");
-  }
-  r.rao = lu.solve(r.exciting_force_per_m);
-  if (!r.rao.allFinite()) {
-    throw NumericalError("strip theory motion equations: iteration 1, non-finite RAO at w_e = " +
-                         format_value(w) + " rad/s");
-  }
-
-  // Added resistance (EQ-AR-1): b'33 = b33 - U da33/dx by central differences.
-  double integral = 0.0;
-  const Complex heave = r.rao(kHeave);
-  const Complex pitch = r.rao(kPitch);
-  for (std::size_t s = 0; s < n; ++s) {
-    if (!has_section(st[s])) continue;
-    const std::size_t lo = s == 0 ? 0 : s - 1;
-    const std::size_t hi = s + 1 == n ? s : s + 1;
-    const double da_dx = (strips[hi].a33 - strips[lo].a33) / (st[hi].x_m - st[lo].x_m);
-    const double b_eff = strips[s].b33 - u * da_dx;
-    const double x = st[s].x_m;
-    const Complex wave = std::exp(Complex(-k * strips[s].mean_draft_m, -k * x * cos_mu));
-    const Complex vz = kI * w * (heave - x * pitch) + u * pitch - kI * omega * wave;
-    integral += wx[s] * b_eff * std::norm(vz);
-  }
-  r.added_resistance_n_per_m2 = -k * cos_mu / (2.0 * w) * integral;
+  solve_motions(w, r);
+  r.added_resistance_n_per_m2 = added_resistance_n_per_m2(frame, r);
   if (cos_mu > 0.0 && !options.added_resistance_aft_of_beam) r.added_resistance_n_per_m2 = 0.0;  // EQ-AR-4
   return r;
 }

@@ -5,9 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <bit>
-#include <future>
-#include <map>
 #include <mutex>
 #include <string>
 
@@ -17,6 +14,8 @@
 #include "common/units.hpp"
 #include "coupled/coupled.hpp"
 #include "propulsion/hull_damping.hpp"
+#include "simulation/response_cache.hpp"
+#include "simulation/tension_laws.hpp"
 #include "statistics/bootstrap.hpp"
 #include "statistics/distributions.hpp"
 #include "statistics/fit.hpp"
@@ -41,110 +40,6 @@ enum Linear : std::size_t { kF1Tug = 0, kF1Tow = 1, kXiNs = 2, kXiNsDot = 3, kLi
 enum Drift : std::size_t { kF2Tug = 0, kF2Tow = 1, kDriftCount = 2 };
 
 
-// The polynomial towline (towline EQ-TOWLINE-11/-13 with the slack limit) in
-// the form simulation/surge.hpp integrates.
-// EQ-CASE-1 (beyond the thesis): the polynomial is only known inside the
-// range of the cable-dynamics runs it was fitted to, [xi_min, xi_max] x
-// [-v_max, v_max]. Outside it a cubic can turn over (negative stiffness)
-// and run away; there it is continued by its tangent plane at the nearest
-// point of the range, with the slopes floored at 0 (tension never falls as the
-// line is stretched further or faster):
-//   tau = P(xc, vc) + max(0, dP/dxi) (xi - xc) + max(0, dP/dxi') (xi' - vc),
-//   xc = clamp(xi, xi_min, xi_max), vc = clamp(xi', -v_max, v_max).
-// Inside the range this is exactly the thesis's polynomial.
-struct PolynomialLaw {
-  static constexpr bool kForcedInline = true;  // surge.hpp: may run on integrate_days_avx2
-  const towline::TowlineFit* fit;
-  towline::AboveBreakingModel model;
-  double x_lo, x_hi, v_max, x_b, k_spring, slack;
-
-  PolynomialLaw(const towline::TowlineFit* f, towline::AboveBreakingModel m)
-      : fit(f),
-        model(m),
-        x_lo(f->summary().fit_xi_min_m),
-        x_hi(f->summary().fit_xi_max_m),
-        v_max(f->summary().fit_xi_dot_max_m_s),
-        x_b(f->summary().spring_onset_extension_m),
-        k_spring(f->summary().straight_spring_n_m),
-        slack(f->summary().slack_limit_n) {}
-
-  // Evaluated four times per RK4 step: inlined into the loop (TOWDB_SURGE_INLINE,
-  // simulation/surge.hpp); GCC 12 otherwise calls extended() out of line.
-  // Templates on the number type (double or the integrator's lanes); the
-  // branches of EQ-CASE-1 are lane selects, the same values as if / else.
-  template <typename T>
-  TOWDB_SURGE_INLINE T p(T x, T v) const {
-    return fit->coefficients().evaluate(x, v);
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T dp_dx(T x, T v) const {
-    const auto& a = fit->coefficients().a;
-    return a[0] + 2.0 * a[2] * x + a[3] * v + 3.0 * a[5] * x * x + 2.0 * a[6] * x * v + a[7] * v * v;
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T dp_dv(T x, T v) const {
-    const auto& a = fit->coefficients().a;
-    return a[1] + a[3] * x + 2.0 * a[4] * v + a[6] * x * x + 2.0 * a[7] * x * v + 3.0 * a[8] * v * v;
-  }
-  // EQ-CASE-1 without the spring and slack limits.
-  template <typename T>
-  TOWDB_SURGE_INLINE T extended(T x, T v) const {
-    const T xc = lanes::clamp(x, x_lo, x_hi), vc = lanes::clamp(v, -v_max, v_max);
-    const T zero = lanes::splat<T>(0.0);
-    T tau = p(xc, vc);
-    const auto x_out = x != xc, v_out = v != vc;  // outside the fitted range (rare)
-    if (lanes::any(x_out)) tau = lanes::select(x_out, tau + lanes::max(zero, dp_dx(xc, vc)) * (x - xc), tau);
-    if (lanes::any(v_out)) tau = lanes::select(v_out, tau + lanes::max(zero, dp_dv(xc, vc)) * (v - vc), tau);
-    return tau;
-  }
-  bool straight_spring() const { return model == towline::AboveBreakingModel::kStraightSpring; }
-  template <typename T>
-  TOWDB_SURGE_INLINE T unlimited(T x, T v) const {
-    const T b = lanes::splat<T>(x_b);
-    const auto above = x > b;
-    if (!straight_spring() || !lanes::any(above)) return extended(x, v);
-    return lanes::select(above, extended(b, v) + k_spring * (x - b), extended(x, v));
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T tension(T x, T v) const {
-    return lanes::max(unlimited(x, v), lanes::splat<T>(slack));
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T stiffness(T x, T v) const {
-    const T xc = lanes::clamp(x, x_lo, x_hi), vc = lanes::clamp(v, -v_max, v_max);
-    const T d = dp_dx(xc, vc);
-    const T k = lanes::select(x != xc, lanes::max(lanes::splat<T>(0.0), d), d);
-    return straight_spring() ? lanes::select(x > lanes::splat<T>(x_b), lanes::splat<T>(k_spring), k) : k;
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T damping(T x, T v) const {
-    if (straight_spring()) x = lanes::select(x > lanes::splat<T>(x_b), lanes::splat<T>(x_b), x);
-    const T xc = lanes::clamp(x, x_lo, x_hi), vc = lanes::clamp(v, -v_max, v_max);
-    const T d = dp_dv(xc, vc);
-    return lanes::select(v != vc, lanes::max(lanes::splat<T>(0.0), d), d);
-  }
-  double mean_tension_n() const { return -slack; }
-};
-
-// tau = a10 xi + a01 xi', never slack (the linear-limit check).
-struct LinearLaw {
-  static constexpr bool kForcedInline = true;  // surge.hpp: may run on integrate_days_avx2
-  double k, c;
-  template <typename T>
-  TOWDB_SURGE_INLINE T tension(T xi, T xd) const {
-    return k * xi + c * xd;
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T stiffness(T, T) const {
-    return lanes::splat<T>(k);
-  }
-  template <typename T>
-  TOWDB_SURGE_INLINE T damping(T, T) const {
-    return lanes::splat<T>(c);
-  }
-  double mean_tension_n() const { return std::numeric_limits<double>::infinity(); }
-};
-
 // Linear interpolation of y(x) on an increasing grid, clamped at the ends.
 template <typename T>
 T interpolate(const std::vector<double>& x, const std::vector<T>& y, double xq) {
@@ -154,57 +49,6 @@ T interpolate(const std::vector<double>& x, const std::vector<T>& y, double xq) 
   const std::size_t i = static_cast<std::size_t>(it - x.begin());
   const double t = (xq - x[i - 1]) / (x[i] - x[i - 1]);
   return y[i - 1] + (y[i] - y[i - 1]) * t;
-}
-
-// Process-wide memo of strip-theory responses: a sweep shares them between
-// all cases with the same vessel, speed, heading and grid (wind, towline and
-// mean tension do not enter). Concurrent requests wait for one computation.
-class ResponseCache {
- public:
-  using Responses = std::vector<seakeeping::VesselResponse>;
-  std::shared_ptr<const Responses> get(const model::Vessel& vessel, double speed_m_s, double heading_rad,
-                                       const std::vector<double>& omegas, const seakeeping::ResponseOptions& o) {
-    std::string key = vessel.name + "|" + vessel.content_sha256;
-    auto add = [&key](double x) { key += "|" + std::to_string(std::bit_cast<std::uint64_t>(x)); };
-    add(speed_m_s);
-    add(heading_rad);
-    for (double w : omegas) add(w);
-    add(o.min_encounter_frequency_nondim);
-    key += o.transom_terms ? "|t" : "|n";
-    key += o.added_resistance_aft_of_beam ? "|a" : "|z";
-    std::promise<std::shared_ptr<const Responses>> promise;
-    std::shared_future<std::shared_ptr<const Responses>> future;
-    bool compute = false;
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      auto it = entries_.find(key);
-      if (it == entries_.end()) {
-        future = promise.get_future().share();
-        entries_.emplace(key, future);
-        compute = true;
-      } else {
-        future = it->second;
-      }
-    }
-    if (compute) {
-      try {
-        promise.set_value(std::make_shared<const Responses>(
-            seakeeping::compute_response(vessel, speed_m_s, heading_rad, omegas, o)));
-      } catch (...) {
-        promise.set_exception(std::current_exception());
-      }
-    }
-    return future.get();
-  }
-
- private:
-  std::mutex mutex_;
-  std::map<std::string, std::shared_future<std::shared_ptr<const Responses>>> entries_;
-};
-
-ResponseCache& response_cache() {
-  static ResponseCache cache;
-  return cache;
 }
 
 }  // namespace
@@ -219,12 +63,6 @@ struct CaseModel {
   std::vector<Complex> h_f1_tug, h_f1_tow, h_xi_ns;
   CaseResult partial;  // everything known before the days are simulated
 };
-
-std::shared_ptr<const std::vector<seakeeping::VesselResponse>> cached_responses(
-    const model::Vessel& vessel, double speed_m_s, double heading_rad, const std::vector<double>& omegas_rad_s,
-    const seakeeping::ResponseOptions& options) {
-  return response_cache().get(vessel, speed_m_s, heading_rad, omegas_rad_s, options);
-}
 
 std::vector<double> response_grid(const CaseOptions& options) {
   const int n = options.response_frequencies;
@@ -263,6 +101,194 @@ void CaseOptions::validate() const {
   require_in_range("case options: bootstrap_replicates", bootstrap_replicates, 100, 1000000);
 }
 
+namespace {
+
+// The record plan's size and coverage, copied into the case result.
+void record_plan_summary(const sea::RecordPlan& plan, CaseResult& r) {
+  r.record_time_step_s = plan.time_step_s();
+  r.record_samples = plan.samples();
+  r.wave_components = plan.components().size();
+  r.retained_variance_fraction = plan.retained_variance_m2() / plan.spectrum_variance_m2();
+}
+
+// The tow points and line angles of the 12-DOF model; the separation is the
+// tug's origin to the tow's, along the track.
+coupled::LineGeometry line_geometry(const model::Vessel& tug, const model::Vessel& tow,
+                                    const towline::FitSummary& towline) {
+  coupled::LineGeometry geometry;
+  geometry.tug_angle_rad = towline.tug_angle_rad;
+  geometry.tow_angle_rad = towline.tow_angle_rad;
+  geometry.tug_point = tug.tow_point;
+  geometry.tow_point = tow.tow_point;
+  geometry.separation_m = -tug.tow_point.x_m + towline.span_m + tow.tow_point.x_m;
+  return geometry;
+}
+
+// The linearised line of the 12-DOF model: a10 and a01 of the polynomial.
+// A very slack wire's polynomial fit can give a10 <= 0 (the cubic follows the
+// large runs, not the small-motion slope; docs/physics.md 2.3); then the
+// static catenary stiffness dH/dX (EQ-TOWLINE-4) stands in (always > 0).
+coupled::LinearLine linearised_line(const towline::TowlineFit& fit) {
+  const double a10 = fit.coefficients().a10();
+  return coupled::LinearLine{a10 > 0.0 ? a10 : fit.summary().static_stiffness_n_m,
+                             std::max(0.0, fit.coefficients().a01())};
+}
+
+// One wave system's vessel responses and coupled transfer functions on a
+// frequency grid spanning its components (empty when none survived the cut-off).
+struct SystemGrid {
+  std::vector<double> omega;
+  std::vector<Complex> f1_tug, f1_tow, xi_p, xi_q;
+  std::vector<double> drift_tug, drift_tow;
+  double heading_rad = 0.0;
+  std::vector<seakeeping::VesselResponse> tug_response, tow_response;  // at U
+};
+
+// Per wave system: the strip-theory responses at U, and the mean added
+// resistance and wave-induced surge damping each adds to the case result.
+std::vector<SystemGrid> system_responses(const CaseInputs& inputs, const CaseOptions& options,
+                                         const std::vector<sea::WaveComponent>& comps, CaseResult& r) {
+  const model::Vessel& tug = *inputs.tug;
+  const model::Vessel& tow = *inputs.tow;
+  const double u = inputs.speed_m_s;
+  const std::size_t n_systems = inputs.sea.systems.size();
+  std::vector<SystemGrid> grids(n_systems);
+  for (std::size_t s = 0; s < n_systems; ++s) {
+    const sea::WaveSystem& system = inputs.sea.systems[s];
+    bool has_components = false;
+    for (const auto& c : comps) has_components = has_components || c.system == static_cast<int>(s);
+    SystemGrid& g = grids[s];
+    g.heading_rad = system.heading_rad;
+    if (!has_components) continue;  // no component of this system survived the cut-off
+    g.omega = response_grid(options);
+    g.tug_response = *cached_responses(tug, u, system.heading_rad, g.omega, options.response);
+    g.tow_response = *cached_responses(tow, u, system.heading_rad, g.omega, options.response);
+    const auto spectrum = [&system](double w) { return system.spectrum.density_m2_s(w); };
+    const double r_tug_u = seakeeping::mean_added_resistance_n(g.tug_response, spectrum);
+    const double r_tow_u = seakeeping::mean_added_resistance_n(g.tow_response, spectrum);
+    r.tug_added_resistance_n += r_tug_u;
+    r.tow_added_resistance_n += r_tow_u;
+    if (options.wave_surge_damping) {
+      const double u2 = u + kWaveDampingSpeedStep_m_s;
+      const auto r_tug2 = cached_responses(tug, u2, system.heading_rad, g.omega, options.response);
+      const auto r_tow2 = cached_responses(tow, u2, system.heading_rad, g.omega, options.response);
+      r.tug_wave_damping_n_s_m +=
+          (seakeeping::mean_added_resistance_n(*r_tug2, spectrum) - r_tug_u) / kWaveDampingSpeedStep_m_s;
+      r.tow_wave_damping_n_s_m +=
+          (seakeeping::mean_added_resistance_n(*r_tow2, spectrum) - r_tow_u) / kWaveDampingSpeedStep_m_s;
+    }
+  }
+  return grids;
+}
+
+// Hull + propeller + wave-induced surge damping of each vessel; both must be
+// positive.
+coupled::SurgeDampings total_dampings(const propulsion::SurgeDamping& tug_damping,
+                                      const propulsion::SurgeDamping& tow_damping, const CaseOptions& options,
+                                      CaseResult& r) {
+  // A negative wave-induced damping (a resistance that falls with speed) is
+  // kept: it is physics. The total surge damping must stay positive. (The
+  // diagnostic nonnegative_wave_damping holds it at 0, issue 17 lead 4.)
+  if (options.nonnegative_wave_damping) {
+    r.tug_wave_damping_n_s_m = std::max(0.0, r.tug_wave_damping_n_s_m);
+    r.tow_wave_damping_n_s_m = std::max(0.0, r.tow_wave_damping_n_s_m);
+  }
+  const coupled::SurgeDampings dampings{tug_damping.total_n_s_m + r.tug_wave_damping_n_s_m,
+                                        tow_damping.total_n_s_m + r.tow_wave_damping_n_s_m};
+  require_input(dampings.tug_n_s_m > 0.0, "tug total surge damping (N s/m)", dampings.tug_n_s_m,
+                "must be positive (hull + propeller + wave-induced)");
+  require_input(dampings.tow_n_s_m > 0.0, "tow total surge damping (N s/m)", dampings.tow_n_s_m,
+                "must be positive (hull + wave-induced)");
+  return dampings;
+}
+
+// Couples each system's responses (once the surge dampings of all systems
+// are known) into its surge forces, non-surge extension and drift coefficients.
+void couple_systems(std::vector<SystemGrid>& grids, const coupled::LineGeometry& geometry,
+                    const coupled::LinearLine& line, const coupled::SurgeDampings& dampings,
+                    const CaseOptions& options) {
+  for (SystemGrid& g : grids) {
+    if (g.omega.empty()) continue;
+    const auto c = coupled::couple(g.tug_response, g.tow_response, geometry, line, dampings);
+    for (const auto& ci : c) {
+      g.f1_tug.push_back(ci.surge_force_tug_n_per_m);
+      g.f1_tow.push_back(ci.surge_force_tow_n_per_m);
+      g.xi_p.push_back(ci.xi_ns_p);
+      g.xi_q.push_back(ci.xi_ns_q);
+      // Newman's approximation needs D >= 0; a negative added resistance
+      // (small, following seas) gives no slowly varying force here.
+      g.drift_tug.push_back(options.signed_drift ? ci.drift_tug_n_per_m2 : std::max(0.0, ci.drift_tug_n_per_m2));
+      g.drift_tow.push_back(options.signed_drift ? ci.drift_tow_n_per_m2 : std::max(0.0, ci.drift_tow_n_per_m2));
+    }
+  }
+}
+
+// The day synthesizer of the case: transfer functions per component
+// (EQ-COUPLED-4: the tow's lag applied here), interpolated from the system
+// grids; the first-order ones are kept in the model for the linear check.
+std::unique_ptr<sea::DaySynthesizer> make_synthesizer(const sea::RecordPlan& plan,
+                                                      const std::vector<SystemGrid>& grids,
+                                                      double separation_m, const CaseOptions& options,
+                                                      CaseModel& m) {
+  const auto& comps = plan.components();
+  std::vector<std::vector<Complex>> linear(kLinearCount, std::vector<Complex>(comps.size()));
+  std::vector<std::vector<double>> drift(kDriftCount, std::vector<double>(comps.size(), 0.0));
+  // EQ-CASE-2: where each second-order series acts. The tug's origin is the
+  // reference. The thesis drives both vessels' slowly varying forces with one
+  // envelope (the default); with options.tow_drift_at_tow the tow's is the
+  // envelope at the tow, G astern, phase k G cos mu per component (thesis
+  // eq. 3-21's lag, as its first-order force has).
+  std::vector<std::vector<double>> drift_phase(kDriftCount, std::vector<double>(comps.size(), 0.0));
+  m.h_f1_tug.resize(comps.size());
+  m.h_f1_tow.resize(comps.size());
+  m.h_xi_ns.resize(comps.size());
+  for (std::size_t j = 0; j < comps.size(); ++j) {
+    const auto& c = comps[j];
+    const SystemGrid& g = grids[static_cast<std::size_t>(c.system)];
+    const Complex lag = std::exp(Complex(0.0, c.wavenumber_rad_m * separation_m * std::cos(c.heading_rad)));
+    const Complex f1_tug = interpolate(g.omega, g.f1_tug, c.omega_rad_s);
+    const Complex f1_tow = interpolate(g.omega, g.f1_tow, c.omega_rad_s) * lag;
+    const Complex xi = interpolate(g.omega, g.xi_p, c.omega_rad_s) + interpolate(g.omega, g.xi_q, c.omega_rad_s) * lag;
+    linear[kF1Tug][j] = f1_tug;
+    linear[kF1Tow][j] = f1_tow;
+    linear[kXiNs][j] = xi;
+    linear[kXiNsDot][j] = Complex(0.0, c.encounter_omega_rad_s) * xi;
+    m.h_f1_tug[j] = f1_tug;
+    m.h_f1_tow[j] = f1_tow;
+    m.h_xi_ns[j] = xi;
+    if (options.second_order_forces) {
+      drift[kF2Tug][j] = interpolate(g.omega, g.drift_tug, c.omega_rad_s);
+      drift[kF2Tow][j] = interpolate(g.omega, g.drift_tow, c.omega_rad_s);
+      if (options.tow_drift_at_tow) {
+        drift_phase[kF2Tow][j] = c.wavenumber_rad_m * separation_m * std::cos(c.heading_rad);
+      }
+    }
+  }
+  return std::make_unique<sea::DaySynthesizer>(plan, linear, drift, drift_phase);
+}
+
+// The two-vessel surge model's masses, dampings and line angles.
+SurgeParameters surge_parameters(const model::Vessel& tug, const model::Vessel& tow,
+                                 const coupled::SurgeDampings& dampings, const towline::FitSummary& towline,
+                                 const coupled::LinearLine& line, const CaseOptions& options) {
+  SurgeParameters p;
+  p.tug_mass_kg = tug.hull.displacement_kg * (1.0 + tug.hull.surge_added_mass_ratio);
+  p.tow_mass_kg = tow.hull.displacement_kg * (1.0 + tow.hull.surge_added_mass_ratio);
+  p.tug_damping_n_s_m = dampings.tug_n_s_m;
+  p.tow_damping_n_s_m = dampings.tow_n_s_m;
+  p.cos_alpha_tug = std::cos(towline.tug_angle_rad);
+  p.cos_alpha_tow = std::cos(towline.tow_angle_rad);
+  if (options.linear_non_surge_tension) {  // EQ-SURGE-6 with the 12-DOF model's line
+    p.linear_non_surge_tension = true;
+    p.non_surge_stiffness_n_m = line.stiffness_n_m;
+    p.non_surge_damping_n_s_m = line.damping_n_s_m;
+  }
+  p.validate();
+  return p;
+}
+
+}  // namespace
+
 std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const CaseOptions& options) {
   inputs.validate();
   options.validate();
@@ -285,26 +311,10 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
   // 2-4. Hydrodynamics, damping, coupling.
   t0 = Clock::now();
   const sea::RecordPlan plan(inputs.sea, u, options.record);
-  const auto& comps = plan.components();
-  r.record_time_step_s = plan.time_step_s();
-  r.record_samples = plan.samples();
-  r.wave_components = comps.size();
-  r.retained_variance_fraction = plan.retained_variance_m2() / plan.spectrum_variance_m2();
-
-  coupled::LineGeometry geometry;
-  geometry.tug_angle_rad = r.towline.tug_angle_rad;
-  geometry.tow_angle_rad = r.towline.tow_angle_rad;
-  geometry.tug_point = tug.tow_point;
-  geometry.tow_point = tow.tow_point;
-  geometry.separation_m = -tug.tow_point.x_m + r.towline.span_m + tow.tow_point.x_m;
+  record_plan_summary(plan, r);
+  const coupled::LineGeometry geometry = line_geometry(tug, tow, r.towline);
   r.separation_m = geometry.separation_m;
-  // The linearised line of the 12-DOF model: a10 and a01 of the polynomial.
-  // A very slack wire's polynomial fit can give a10 <= 0 (the cubic follows the
-  // large runs, not the small-motion slope; docs/physics.md 2.3); then the
-  // static catenary stiffness dH/dX (EQ-TOWLINE-4) stands in (always > 0).
-  const double a10 = m->fit->coefficients().a10();
-  const coupled::LinearLine line{a10 > 0.0 ? a10 : r.towline.static_stiffness_n_m,
-                                 std::max(0.0, m->fit->coefficients().a01())};
+  const coupled::LinearLine line = linearised_line(*m->fit);
 
   const propulsion::SurgeDamping tug_damping = propulsion::tug_surge_damping(tug, u, h, {}, options.tug_propeller);
   const propulsion::SurgeDamping tow_damping = propulsion::tow_surge_damping(tow, u, {}, options.tow_propeller);
@@ -313,120 +323,13 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
   r.tow_hull_damping_n_s_m = tow_damping.hull_n_s_m;
   r.tow_propeller_damping_n_s_m = tow_damping.propeller_n_s_m;
 
-  // Per wave system: responses on a grid spanning its components.
-  const std::size_t n_systems = inputs.sea.systems.size();
-  struct SystemGrid {
-    std::vector<double> omega;
-    std::vector<Complex> f1_tug, f1_tow, xi_p, xi_q;
-    std::vector<double> drift_tug, drift_tow;
-    double heading_rad = 0.0;
-    std::vector<seakeeping::VesselResponse> tug_response, tow_response;  // at U
-  };
-  std::vector<SystemGrid> grids(n_systems);
-  for (std::size_t s = 0; s < n_systems; ++s) {
-    const sea::WaveSystem& system = inputs.sea.systems[s];
-    bool has_components = false;
-    for (const auto& c : comps) has_components = has_components || c.system == static_cast<int>(s);
-    SystemGrid& g = grids[s];
-    g.heading_rad = system.heading_rad;
-    if (!has_components) continue;  // no component of this system survived the cut-off
-    g.omega = response_grid(options);
-    g.tug_response = *response_cache().get(tug, u, system.heading_rad, g.omega, options.response);
-    g.tow_response = *response_cache().get(tow, u, system.heading_rad, g.omega, options.response);
-    const auto spectrum = [&system](double w) { return system.spectrum.density_m2_s(w); };
-    const double r_tug_u = seakeeping::mean_added_resistance_n(g.tug_response, spectrum);
-    const double r_tow_u = seakeeping::mean_added_resistance_n(g.tow_response, spectrum);
-    r.tug_added_resistance_n += r_tug_u;
-    r.tow_added_resistance_n += r_tow_u;
-    if (options.wave_surge_damping) {
-      const double u2 = u + kWaveDampingSpeedStep_m_s;
-      const auto r_tug2 = response_cache().get(tug, u2, system.heading_rad, g.omega, options.response);
-      const auto r_tow2 = response_cache().get(tow, u2, system.heading_rad, g.omega, options.response);
-      r.tug_wave_damping_n_s_m +=
-          (seakeeping::mean_added_resistance_n(*r_tug2, spectrum) - r_tug_u) / kWaveDampingSpeedStep_m_s;
-      r.tow_wave_damping_n_s_m +=
-          (seakeeping::mean_added_resistance_n(*r_tow2, spectrum) - r_tow_u) / kWaveDampingSpeedStep_m_s;
-    }
-  }
-  // A negative wave-induced damping (a resistance that falls with speed) is
-  // kept: it is physics. The total surge damping must stay positive. (The
-  // diagnostic nonnegative_wave_damping holds it at 0, issue 17 lead 4.)
-  if (options.nonnegative_wave_damping) {
-    r.tug_wave_damping_n_s_m = std::max(0.0, r.tug_wave_damping_n_s_m);
-    r.tow_wave_damping_n_s_m = std::max(0.0, r.tow_wave_damping_n_s_m);
-  }
-  const coupled::SurgeDampings dampings{tug_damping.total_n_s_m + r.tug_wave_damping_n_s_m,
-                                        tow_damping.total_n_s_m + r.tow_wave_damping_n_s_m};
-  require_input(dampings.tug_n_s_m > 0.0, "tug total surge damping (N s/m)", dampings.tug_n_s_m,
-                "must be positive (hull + propeller + wave-induced)");
-  require_input(dampings.tow_n_s_m > 0.0, "tow total surge damping (N s/m)", dampings.tow_n_s_m,
-                "must be positive (hull + wave-induced)");
-  for (std::size_t s = 0; s < n_systems; ++s) {
-    SystemGrid& g = grids[s];
-    if (g.omega.empty()) continue;
-    // Coupled once the surge dampings of all systems are known.
-    const auto c = coupled::couple(g.tug_response, g.tow_response, geometry, line, dampings);
-    for (const auto& ci : c) {
-      g.f1_tug.push_back(ci.surge_force_tug_n_per_m);
-      g.f1_tow.push_back(ci.surge_force_tow_n_per_m);
-      g.xi_p.push_back(ci.xi_ns_p);
-      g.xi_q.push_back(ci.xi_ns_q);
-      // Newman's approximation needs D >= 0; a negative added resistance
-      // (small, following seas) gives no slowly varying force here.
-      g.drift_tug.push_back(options.signed_drift ? ci.drift_tug_n_per_m2 : std::max(0.0, ci.drift_tug_n_per_m2));
-      g.drift_tow.push_back(options.signed_drift ? ci.drift_tow_n_per_m2 : std::max(0.0, ci.drift_tow_n_per_m2));
-    }
-  }
-
-  // Transfer functions per component (EQ-COUPLED-4: the tow's lag applied here).
-  std::vector<std::vector<Complex>> linear(kLinearCount, std::vector<Complex>(comps.size()));
-  std::vector<std::vector<double>> drift(kDriftCount, std::vector<double>(comps.size(), 0.0));
-  // EQ-CASE-2: where each second-order series acts. The tug's origin is the
-  // reference. The thesis drives both vessels' slowly varying forces with one
-  // envelope (the default); with options.tow_drift_at_tow the tow's is the
-  // envelope at the tow, G astern, phase k G cos mu per component (thesis
-  // eq. 3-21's lag, as its first-order force has).
-  std::vector<std::vector<double>> drift_phase(kDriftCount, std::vector<double>(comps.size(), 0.0));
-  m->h_f1_tug.resize(comps.size());
-  m->h_f1_tow.resize(comps.size());
-  m->h_xi_ns.resize(comps.size());
-  for (std::size_t j = 0; j < comps.size(); ++j) {
-    const auto& c = comps[j];
-    const SystemGrid& g = grids[static_cast<std::size_t>(c.system)];
-    const Complex lag = std::exp(Complex(0.0, c.wavenumber_rad_m * geometry.separation_m * std::cos(c.heading_rad)));
-    const Complex f1_tug = interpolate(g.omega, g.f1_tug, c.omega_rad_s);
-    const Complex f1_tow = interpolate(g.omega, g.f1_tow, c.omega_rad_s) * lag;
-    const Complex xi = interpolate(g.omega, g.xi_p, c.omega_rad_s) + interpolate(g.omega, g.xi_q, c.omega_rad_s) * lag;
-    linear[kF1Tug][j] = f1_tug;
-    linear[kF1Tow][j] = f1_tow;
-    linear[kXiNs][j] = xi;
-    linear[kXiNsDot][j] = Complex(0.0, c.encounter_omega_rad_s) * xi;
-    m->h_f1_tug[j] = f1_tug;
-    m->h_f1_tow[j] = f1_tow;
-    m->h_xi_ns[j] = xi;
-    if (options.second_order_forces) {
-      drift[kF2Tug][j] = interpolate(g.omega, g.drift_tug, c.omega_rad_s);
-      drift[kF2Tow][j] = interpolate(g.omega, g.drift_tow, c.omega_rad_s);
-      if (options.tow_drift_at_tow) {
-        drift_phase[kF2Tow][j] = c.wavenumber_rad_m * geometry.separation_m * std::cos(c.heading_rad);
-      }
-    }
-  }
-  m->synthesizer = std::make_unique<sea::DaySynthesizer>(plan, linear, drift, drift_phase);
+  std::vector<SystemGrid> grids = system_responses(inputs, options, plan.components(), r);
+  const coupled::SurgeDampings dampings = total_dampings(tug_damping, tow_damping, options, r);
+  couple_systems(grids, geometry, line, dampings, options);
+  m->synthesizer = make_synthesizer(plan, grids, geometry.separation_m, options, *m);
   r.fft_plan_from_stored_wisdom = m->synthesizer->plan_from_stored_wisdom();
 
-  m->surge.tug_mass_kg = tug.hull.displacement_kg * (1.0 + tug.hull.surge_added_mass_ratio);
-  m->surge.tow_mass_kg = tow.hull.displacement_kg * (1.0 + tow.hull.surge_added_mass_ratio);
-  m->surge.tug_damping_n_s_m = dampings.tug_n_s_m;
-  m->surge.tow_damping_n_s_m = dampings.tow_n_s_m;
-  m->surge.cos_alpha_tug = std::cos(r.towline.tug_angle_rad);
-  m->surge.cos_alpha_tow = std::cos(r.towline.tow_angle_rad);
-  if (options.linear_non_surge_tension) {  // EQ-SURGE-6 with the 12-DOF model's line
-    m->surge.linear_non_surge_tension = true;
-    m->surge.non_surge_stiffness_n_m = line.stiffness_n_m;
-    m->surge.non_surge_damping_n_s_m = line.damping_n_s_m;
-  }
-  m->surge.validate();
+  m->surge = surge_parameters(tug, tow, dampings, r.towline, line, options);
   r.tug_mass_kg = m->surge.tug_mass_kg;
   r.tow_mass_kg = m->surge.tow_mass_kg;
   r.timings.hydrodynamics_s = seconds_since(t0);

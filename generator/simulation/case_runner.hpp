@@ -52,6 +52,7 @@
 #include "sea/record.hpp"
 #include "sea/spectrum.hpp"
 #include "seakeeping/seakeeping.hpp"
+#include "simulation/response_cache.hpp"
 #include "simulation/surge.hpp"
 #include "towline/towline.hpp"
 
@@ -197,13 +198,6 @@ struct CaseResult {
 // solver fails. Strip-theory responses are memoised process-wide per
 // (vessel file, speed, heading, frequency grid, options), like towline fits.
 CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options = {});
-
-// Strip-theory responses of a vessel through the process-wide memo that
-// run_case uses (so callers such as the sweep's mean-tension calculator
-// share the work with the cases).
-std::shared_ptr<const std::vector<seakeeping::VesselResponse>> cached_responses(
-    const model::Vessel& vessel, double speed_m_s, double heading_rad, const std::vector<double>& omegas_rad_s,
-    const seakeeping::ResponseOptions& options);
 
 // The absolute-frequency grid of CaseOptions (uniform, response_frequencies points).
 std::vector<double> response_grid(const CaseOptions& options);

@@ -1,6 +1,5 @@
 #include "sweep/build.hpp"
 
-#include <chrono>
 #include <cstdio>
 #include <condition_variable>
 #include <deque>
@@ -11,63 +10,22 @@
 #include <system_error>
 #include <utility>
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
 #include "store/database.hpp"
+#include "sweep/build_lock.hpp"
+#include "sweep/build_mpi.hpp"
+#include "sweep/build_work.hpp"
 #include "sweep/numerics.hpp"
 #include "sweep/progress.hpp"
-#include "sweep/serialize.hpp"
 
 namespace towdb::sweep {
 
 namespace {
 
 constexpr int kMaxThreads = 1024;
-
-// ---------------------------------------------------------------------------
-// One computed case, handed from a worker to the writer.
-struct CaseEvent {
-  enum class Kind { kStarted, kFinished };
-  Kind kind = Kind::kFinished;
-  std::size_t work = 0;  // index into the work list
-  bool ok = false;
-  CaseOutcome outcome;
-  std::string error;
-  double runtime_s = 0.0;
-};
-
-// Runs the runner on one case and never throws: a failure becomes the
-// event's error text, prefixed by its kind.
-CaseEvent run_one(std::size_t work, const CaseSpec& spec, const io::ShipCatalog& catalog, const CaseRunner& runner) {
-  CaseEvent e;
-  e.work = work;
-  const auto t0 = std::chrono::steady_clock::now();
-  try {
-    e.outcome = runner(spec, catalog);
-    e.outcome.validate();
-    if (static_cast<int>(e.outcome.days.size()) != spec.days) {
-      throw NumericalError("case runner returned " + std::to_string(e.outcome.days.size()) +
-                           " daily maxima, expected days = " + std::to_string(spec.days));
-    }
-    e.ok = true;
-  } catch (const InputError& x) {
-    e.error = std::string("input error: ") + x.what();
-  } catch (const NumericalError& x) {
-    e.error = std::string("numerical error: ") + x.what();
-  } catch (const std::exception& x) {
-    e.error = std::string("error: ") + x.what();
-  } catch (...) {
-    e.error = "error: unknown exception";
-  }
-  if (!e.ok) e.outcome = CaseOutcome{};
-  e.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return e;
-}
 
 // Worker threads push, the one writer thread pops.
 class EventQueue {
@@ -102,54 +60,6 @@ class EventQueue {
   std::deque<CaseEvent> events_;
   bool closed_ = false;
 };
-
-// An exclusive advisory lock (flock) on the database file for the whole
-// build: a second `towdb build` on the same file is refused at once. flock
-// locks are independent of SQLite's POSIX record locks on Linux; the
-// descriptor is closed only after the database connection (declared after
-// this object, destroyed before it), so SQLite's locks are never dropped by
-// our close().
-class BuildLock {
- public:
-  explicit BuildLock(const std::filesystem::path& path) : path_(path) {
-    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw InputError(path.string() + ": cannot open the database file for writing");
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-      ::close(fd_);
-      fd_ = -1;
-      throw InputError(path.string() + ": another towdb build is writing to this database (it holds the build lock)");
-    }
-  }
-  ~BuildLock() {
-    if (fd_ >= 0) ::close(fd_);  // releases the flock
-  }
-  BuildLock(const BuildLock&) = delete;
-  BuildLock& operator=(const BuildLock&) = delete;
-
- private:
-  std::filesystem::path path_;
-  int fd_ = -1;
-};
-
-// A database file without any write permission bit is treated as read-only
-// even for root (who could write it anyway): its owner marked it so.
-void require_writable(const std::filesystem::path& path) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) {
-    const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-    if (!std::filesystem::is_directory(dir)) {
-      throw InputError(path.string() + ": the directory " + dir.string() + " does not exist");
-    }
-    return;  // a new database
-  }
-  if (S_ISDIR(st.st_mode)) throw InputError(path.string() + ": is a directory, not a database file");
-  if ((st.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0) {
-    char mode[8];
-    std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(st.st_mode & 07777));
-    throw InputError(path.string() + ": the database file is read-only (mode " + mode +
-                     "); make it writable (chmod u+w) to build into it");
-  }
-}
 
 std::string host_name() {
   char buffer[256] = {};
@@ -206,8 +116,6 @@ class Recorder {
   ProgressBar progress_;
 };
 
-bool stop_requested(const BuildOptions& o) { return o.stop && o.stop->load(); }
-
 // ---------------------------------------------------------------------------
 // One process: OpenMP workers, one writer thread.
 void run_threads(const std::vector<CaseSpec>& cases, const std::vector<std::size_t>& work,
@@ -245,118 +153,6 @@ void run_threads(const std::vector<CaseSpec>& cases, const std::vector<std::size
   writer.join();
   if (writer_error) std::rethrow_exception(writer_error);
   summary.interrupted = skipped.load() > 0;
-}
-
-// ---------------------------------------------------------------------------
-// MPI: rank 0 dispatches and writes; ranks 1.. compute (dynamic scheduling).
-Bytes encode_work(std::size_t work, const CaseSpec& spec, const CaseKeys& keys, const std::string& code_version) {
-  ByteWriter w;
-  w.i64(static_cast<std::int64_t>(work));
-  w.str(keys.inputs_sha256);
-  w.str(code_version);
-  w.str(numerics_fingerprint());
-  write_spec(w, spec);
-  return w.take();
-}
-
-Bytes encode_result(const CaseEvent& e) {
-  ByteWriter w;
-  w.i64(static_cast<std::int64_t>(e.work));
-  w.u8(e.ok ? 1 : 0);
-  w.f64(e.runtime_s);
-  if (e.ok) {
-    write_outcome(w, e.outcome);
-  } else {
-    w.str(e.error);
-  }
-  return w.take();
-}
-
-CaseEvent decode_result(const Bytes& bytes) {
-  ByteReader r(bytes);
-  CaseEvent e;
-  e.work = static_cast<std::size_t>(r.i64());
-  e.ok = r.u8() != 0;
-  e.runtime_s = r.f64();
-  if (e.ok) {
-    e.outcome = read_outcome(r);
-  } else {
-    e.error = r.str();
-  }
-  return e;
-}
-
-void run_coordinator(const std::vector<CaseSpec>& cases, const std::vector<CaseKeys>& keys,
-                     const std::vector<std::size_t>& work, const BuildOptions& options, int ranks,
-                     Recorder& recorder, BuildSummary& summary) {
-  std::size_t next = 0;
-  int active = ranks - 1;
-  std::exception_ptr writer_error;
-  while (active > 0) {
-    distributed::Message m = distributed::receive(-1);
-    if (m.tag == distributed::Tag::kResult && !writer_error) {
-      try {
-        recorder.apply(decode_result(m.bytes));
-      } catch (...) {
-        writer_error = std::current_exception();
-      }
-    }
-    if (next < work.size() && !stop_requested(options) && !writer_error) {
-      const std::size_t i = work[next];
-      distributed::send(m.source, distributed::Tag::kWork, encode_work(next, cases[i], keys[i], options.code_version));
-      CaseEvent started;
-      started.kind = CaseEvent::Kind::kStarted;
-      started.work = next;
-      if (!writer_error) {
-        try {
-          recorder.apply(started);
-        } catch (...) {
-          writer_error = std::current_exception();
-        }
-      }
-      ++next;
-    } else {
-      distributed::send(m.source, distributed::Tag::kStop, {});
-      --active;
-    }
-  }
-  if (writer_error) std::rethrow_exception(writer_error);
-  summary.interrupted = next < work.size();
-}
-
-void run_worker(const io::ShipCatalog& catalog, const CaseRunner& runner, int rank) {
-  distributed::send(0, distributed::Tag::kReady, {});
-  for (;;) {
-    distributed::Message m = distributed::receive(0);
-    if (m.tag == distributed::Tag::kStop) return;
-    ByteReader r(m.bytes);
-    const auto work = static_cast<std::size_t>(r.i64());
-    const std::string inputs_sha256 = r.str();
-    const std::string code_version = r.str();
-    const std::string rank0_numerics = r.str();
-    const CaseSpec spec = read_spec(r);
-    CaseEvent e;
-    // This rank must compute the bits rank 0 would (numerics.hpp), from the
-    // ship files rank 0 hashed.
-    std::string mismatch = numerics_mismatch(rank, numerics_fingerprint(), rank0_numerics);
-    if (mismatch.empty()) {
-      try {
-        if (case_keys(spec, catalog, code_version).inputs_sha256 != inputs_sha256) {
-          mismatch = "MPI rank " + std::to_string(rank) +
-                     ": its ship or towline files differ from rank 0's (inputs_sha256 mismatch)";
-        }
-      } catch (const std::exception& x) {
-        mismatch = "MPI rank " + std::to_string(rank) + ": " + x.what();
-      }
-    }
-    if (mismatch.empty()) {
-      e = run_one(work, spec, catalog, runner);
-    } else {
-      e.work = work;
-      e.error = "input error: " + mismatch;
-    }
-    distributed::send(0, distributed::Tag::kResult, encode_result(e));
-  }
 }
 
 // The key of meta that holds the numerics fingerprint of the processes that
@@ -525,9 +321,7 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
 
   // Everything that can be checked without the database first.
   std::vector<CaseKeys> keys;
-  auto stop_workers = [&] {
-    for (int r = 1; r < ranks; ++r) distributed::send(r, distributed::Tag::kStop, {});
-  };
+  auto stop_workers = [ranks] { stop_mpi_workers(ranks); };
   try {
     keys = compute_keys(cases, catalog, options.code_version);
     require_writable(db_path);
@@ -588,7 +382,8 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
     summary.scheduled = static_cast<int>(work.size());
     Recorder recorder(*writer, cases, keys, work, registered, options, summary.build_id, summary);
     if (ranks > 1) {
-      run_coordinator(cases, keys, work, options, ranks, recorder, summary);
+      run_coordinator(cases, keys, work, options, ranks, [&recorder](const CaseEvent& e) { recorder.apply(e); },
+                      summary);
     } else {
       run_threads(cases, work, catalog, runner, options, recorder, summary);
     }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/error.hpp"
+#include "io/csv.hpp"
 #include "sweep/keys.hpp"
 
 namespace towdb::sweep {
@@ -14,15 +15,6 @@ namespace {
 
 constexpr const char* kHeader = "case,tug,tow,speed_kt,wind_kt,heading_deg,length_ft,line,mean_lbf,days,dyn_kips";
 constexpr std::size_t kColumns = 11;
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::string field;
-  std::istringstream is(line);
-  while (std::getline(is, field, ',')) out.push_back(field);
-  if (!line.empty() && line.back() == ',') out.emplace_back();
-  return out;
-}
 
 double parse_number(const std::string& text, const std::string& where, const char* column) {
   double v = 0.0;
@@ -75,7 +67,7 @@ std::vector<CalibrationRow> parse_calibration_csv(std::string_view text, const s
       continue;
     }
     if (line.empty()) continue;
-    const std::vector<std::string> f = split(line);
+    const std::vector<std::string> f = io::csv::split_plain(line);
     if (f.size() != kColumns) {
       throw InputError(where + ": " + std::to_string(f.size()) + " fields, expected " + std::to_string(kColumns));
     }

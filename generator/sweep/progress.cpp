@@ -3,8 +3,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include <unistd.h>
-
 namespace towdb::sweep {
 
 namespace {
@@ -29,18 +27,13 @@ std::string duration_text(double seconds) {
 }
 }  // namespace
 
-ProgressBar::ProgressBar(int total, bool enabled)
-    : total_(total),
-      enabled_(enabled && isatty(fileno(stderr)) != 0),
-      start_(std::chrono::steady_clock::now()),
-      last_draw_(start_ - std::chrono::seconds(1)) {}
+ProgressBar::ProgressBar(int total, bool enabled) : total_(total), line_(enabled, kRedrawInterval_s) {}
 
 std::string ProgressBar::format(int done, int failed, int total, double elapsed_s) {
   const int finished = done + failed;
   const double fraction = total > 0 ? static_cast<double>(finished) / total : 1.0;
   const int filled = static_cast<int>(std::floor(fraction * kBarWidth));
-  std::string bar(static_cast<std::size_t>(filled), '#');
-  bar.append(static_cast<std::size_t>(kBarWidth - filled), '-');
+  const std::string bar = ProgressLine::bar(filled, kBarWidth, '-');
   const double rate = elapsed_s > 0 ? finished / elapsed_s : 0.0;
   const std::string eta = finished == 0 ? "?" : duration_text((total - finished) / rate);
   char buffer[160];
@@ -50,13 +43,8 @@ std::string ProgressBar::format(int done, int failed, int total, double elapsed_
 }
 
 void ProgressBar::draw(int done, int failed, bool final) {
-  if (!enabled_) return;
-  const auto now = std::chrono::steady_clock::now();
-  if (!final && std::chrono::duration<double>(now - last_draw_).count() < kRedrawInterval_s) return;
-  last_draw_ = now;
-  const double elapsed_s = std::chrono::duration<double>(now - start_).count();
-  std::fprintf(stderr, "\r%s\x1b[K%s", format(done, failed, total_, elapsed_s).c_str(), final ? "\n" : "");
-  std::fflush(stderr);
+  if (!line_.enabled() || !line_.due(final)) return;
+  line_.draw(format(done, failed, total_, line_.elapsed_s()), final);
 }
 
 void ProgressBar::update(int done, int failed) { draw(done, failed, false); }

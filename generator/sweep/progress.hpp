@@ -1,11 +1,13 @@
 // The build's progress line on stderr: cases done/total, rate, ETA and
-// failures, redrawn in place at most a few times a second. Only when stderr
-// is a terminal; silent otherwise (logs and pipes stay clean).
+// failures, redrawn in place at most a few times a second (the line itself is
+// common/progress.hpp). Only when stderr is a terminal; silent otherwise
+// (logs and pipes stay clean).
 #ifndef TOWDB_SWEEP_PROGRESS_HPP
 #define TOWDB_SWEEP_PROGRESS_HPP
 
-#include <chrono>
 #include <string>
+
+#include "common/progress.hpp"
 
 namespace towdb::sweep {
 
@@ -24,9 +26,7 @@ class ProgressBar {
  private:
   void draw(int done, int failed, bool final);
   int total_;
-  bool enabled_;
-  std::chrono::steady_clock::time_point start_;
-  std::chrono::steady_clock::time_point last_draw_;
+  ProgressLine line_;
 };
 
 }  // namespace towdb::sweep

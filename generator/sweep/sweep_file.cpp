@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -372,163 +373,223 @@ SweepFile load_sweep(const std::filesystem::path& path) {
   return parse_sweep(read_text_file(path), path.string());
 }
 
-SweepExpansion expand_sweep(const SweepFile& sweep, const io::ShipCatalog& catalog, const ExpandOptions& options) {
-  SweepExpansion out;
-  std::map<std::string, std::string> seen;  // condition_key -> where it came from
-  auto add = [&](CaseSpec spec, const std::string& where) {
-    try {
-      spec.validate();
-    } catch (const InputError& e) {
-      throw InputError(where + ": " + e.what());
-    }
-    // The static catenary (and the towline fit) exist only below the breaking strength.
-    const double breaking_n =
-        catalog.towline(catalog.vessel(spec.tug).vessel, spec.line, units::ft_to_m(spec.length_ft)).breaking_strength_n();
-    if (!(spec.mean_tension_n() < breaking_n)) {
-      throw InputError(where + ": mean_tension_lbf = " + format_value(spec.mean_tension_lbf) +
-                       ": must be below the towline's breaking strength, " +
-                       canonical_number(std::round(units::n_to_lbf(breaking_n))) + " lbf (" + spec.tug + ", " +
-                       model::to_string(spec.line) + " " + canonical_number(spec.length_ft) + " ft)");
-    }
-    const auto [it, inserted] = seen.emplace(spec.condition_key, where);
-    if (!inserted) {
-      throw InputError(where + ": gives the same case as " + it->second + " (" + spec.tug + " / " + spec.tow + ", " +
-                       canonical_number(spec.speed_kt) + " kt, " + sea_text(spec.sea) + ", " +
-                       canonical_number(spec.heading_deg) + " deg, " + model::to_string(spec.line) + " " +
-                       canonical_number(spec.length_ft) + " ft, " + spec.mean_tension_label + ")");
-    }
-    out.cases.push_back(std::move(spec));
-  };
-  auto check_towline = [&](const model::Vessel& tug, model::LineKind line, double length_ft, const std::string& where) {
-    try {
-      catalog.towline(tug, line, units::ft_to_m(length_ft));
-    } catch (const InputError& e) {
-      throw InputError(where + ": " + e.what());
-    }
-  };
+namespace {
+
+// Expands a sweep's entries into cases, one entry at a time, refusing an
+// entry that repeats an earlier case's condition.
+class SweepExpander {
+ public:
+  SweepExpander(const SweepFile& sweep, const io::ShipCatalog& catalog, const ExpandOptions& options)
+      : sweep_(sweep), catalog_(catalog), options_(options) {}
 
   // Entries in file order (grids and cases interleaved by source line).
-  std::size_t gi = 0, ci = 0;
-  while (gi < sweep.grids.size() || ci < sweep.cases.size()) {
-    const bool take_grid = ci >= sweep.cases.size() ||
-                           (gi < sweep.grids.size() && sweep.grids[gi].line < sweep.cases[ci].line);
-    if (!take_grid) {
-      const CaseEntry& c = sweep.cases[ci++];
-      const std::string where = entry_where(sweep.path, c.line, "case", c.label);
-      CaseSpec spec = c.spec;
-      const model::Vessel& tug = resolve_vessel(catalog, spec.tug, where, true);
-      spec.tug = tug.name;
-      spec.tow = resolve_vessel(catalog, spec.tow, where, false).name;
-      check_towline(tug, spec.line, spec.length_ft, where);
-      spec.seed = c.seed ? *c.seed : case_seed(c.base_seed, spec);
-      spec.condition_key = condition_key(spec, true);
-      add(std::move(spec), where);
-      continue;
+  SweepExpansion expand() {
+    std::size_t gi = 0, ci = 0;
+    while (gi < sweep_.grids.size() || ci < sweep_.cases.size()) {
+      const bool take_grid = ci >= sweep_.cases.size() ||
+                             (gi < sweep_.grids.size() && sweep_.grids[gi].line < sweep_.cases[ci].line);
+      if (take_grid) {
+        expand_grid(sweep_.grids[gi++]);
+      } else {
+        expand_case(sweep_.cases[ci++]);
+      }
     }
-    const GridEntry& g = sweep.grids[gi++];
-    const std::string where = entry_where(sweep.path, g.line, "grid", g.label);
-    g.mean_model.validate();
-    bool needs_calculated = false;
-    for (const auto& level : g.mean_tensions) needs_calculated |= level.basis == MeanTensionBasis::kCalculated;
-    for (const std::string& tug_name : g.tugs) {
-      const model::Vessel& tug = resolve_vessel(catalog, tug_name, where, true);
-      for (const TowlineChoice& tl : g.towlines) check_towline(tug, tl.line, tl.length_ft, where);
-      for (const std::string& tow_name : g.tows) {
-        const model::Vessel& tow = resolve_vessel(catalog, tow_name, where, false);
-        if (!g.coverage_note.empty()) out.notes.push_back({g.label, tug.name, tow.name, g.coverage_note});
-        for (double v0_kt : g.speeds_kt) {
-          for (const SeaSpec& sea : g.seas) {
-            if (needs_calculated && !sea.wind_kt) {
-              throw InputError(where + ": a \"calculated\" mean tension needs a wind; the sea '" + sea_text(sea) +
-                               "' has no wind_kt");
-            }
-            for (double heading_deg : g.headings_deg) {
-              // T_calc(V) of this condition in lbf (EQ-SWEEP-1).
-              auto t_calc_lbf = [&](double v_kt) {
-                double rs_n = 0.0;
-                if (g.mean_model.sea_resistance != SeaResistanceModel::kNone) {
-                  if (!options.sea_resistance) {
-                    throw InputError(where + ": sea_resistance needs the strip-theory hook, which this caller does "
-                                     "not provide");
-                  }
-                  const double mu_deg =
-                      g.mean_model.sea_resistance == SeaResistanceModel::kStripTheoryHead ? 180.0 : heading_deg;
-                  rs_n = options.sea_resistance(tow, v_kt, sea, mu_deg);
-                }
-                return units::n_to_lbf(
-                    calculated_mean_tension(tow, v_kt, sea.wind_kt.value_or(0.0), heading_deg, rs_n, g.mean_model)
-                        .total_n);
-              };
-              SpeedChoice speed{v0_kt, 0.0, false};
-              if (sea.wind_kt) {
-                std::string reason;
-                const std::optional<SpeedChoice> chosen = choose_speed(v0_kt, g.mean_model, t_calc_lbf, &reason);
-                if (!chosen) {
-                  out.skipped.push_back({g.label, tug.name, tow.name, v0_kt, sea_text(sea), heading_deg, reason});
-                  continue;
-                }
-                speed = *chosen;
-                // A speed reduced down to another of the grid's speeds would repeat that
-                // speed's cases: the condition is skipped (thesis ch. 5: "eliminated").
-                double lower_nominal_kt = 0.0;
-                for (double v : g.speeds_kt) {
-                  if (v < v0_kt) lower_nominal_kt = std::max(lower_nominal_kt, v);
-                }
-                if (speed.reduced && lower_nominal_kt > 0.0 && speed.speed_kt <= lower_nominal_kt) {
-                  out.skipped.push_back({g.label, tug.name, tow.name, v0_kt, sea_text(sea), heading_deg,
-                                         "calculated mean tension exceeds " + format_value(g.mean_model.limit_lbf) +
-                                             " lbf above " + format_value(speed.speed_kt) + " kt, which the grid's " +
-                                             format_value(lower_nominal_kt) + " kt cases already cover"});
-                  continue;
-                }
-                if (needs_calculated && !(speed.calculated_lbf > 0.0)) {
-                  out.skipped.push_back({g.label, tug.name, tow.name, v0_kt, sea_text(sea), heading_deg,
-                                         "calculated mean tension " + format_value(speed.calculated_lbf) +
-                                             " lbf is not positive (wind and sea push the tow)"});
-                  continue;
-                }
-              }
-              for (const TowlineChoice& tl : g.towlines) {
-                for (const MeanTensionLevel& level : g.mean_tensions) {
-                  CaseSpec spec;
-                  spec.tug = tug.name;
-                  spec.tow = tow.name;
-                  spec.speed_kt = speed.speed_kt;
-                  spec.nominal_speed_kt = v0_kt;
-                  spec.sea = sea;
-                  spec.heading_deg = heading_deg;
-                  spec.line = tl.line;
-                  spec.length_ft = tl.length_ft;
-                  switch (level.basis) {  // EQ-SWEEP-2
-                    case MeanTensionBasis::kCalculated:
-                      spec.mean_tension_lbf = level.factor * speed.calculated_lbf;
-                      break;
-                    case MeanTensionBasis::kHullHalfPropeller:
-                      spec.mean_tension_lbf =
-                          level.factor * hull_half_propeller_tension_lbf(tow, speed.speed_kt, g.mean_model);
-                      break;
-                    case MeanTensionBasis::kGiven:
-                      spec.mean_tension_lbf = level.factor * *level.value_lbf;
-                      break;
-                  }
-                  spec.mean_tension_label = level.label;
-                  if (sea.wind_kt && speed.calculated_lbf > 0.0) {
-                    spec.calculated_mean_tension_lbf = speed.calculated_lbf;
-                  }
-                  spec.days = g.days;
-                  spec.sweep_label = g.label;
-                  spec.seed = case_seed(g.base_seed, spec);
-                  spec.condition_key = condition_key(spec, level.basis == MeanTensionBasis::kGiven);
-                  add(std::move(spec), where);
-                }
-              }
-            }
+    return std::move(out_);
+  }
+
+ private:
+  // One condition of a grid: where it comes from and what it is.
+  struct GridCondition {
+    const GridEntry& grid;
+    const std::string& where;
+    const model::Vessel& tug;
+    const model::Vessel& tow;
+    double nominal_speed_kt;
+    const SeaSpec& sea;
+    double heading_deg;
+  };
+
+  void expand_case(const CaseEntry& c);
+  void expand_grid(const GridEntry& g);
+  // The speed to tow a grid condition at (EQ-SWEEP-3), or nullopt with the
+  // condition recorded as skipped.
+  std::optional<SpeedChoice> grid_speed(const GridCondition& k, bool needs_calculated);
+  // The cases of one grid condition: every towline and mean-tension level.
+  void add_grid_cases(const GridCondition& k, const SpeedChoice& speed);
+  // Adds a case after checking it, its mean tension against the towline's
+  // breaking strength, and that no earlier case has its condition.
+  void add(CaseSpec spec, const std::string& where);
+  void check_towline(const model::Vessel& tug, model::LineKind line, double length_ft, const std::string& where) const;
+
+  const SweepFile& sweep_;
+  const io::ShipCatalog& catalog_;
+  const ExpandOptions& options_;
+  SweepExpansion out_;
+  std::map<std::string, std::string> seen_;  // condition_key -> where it came from
+};
+
+void SweepExpander::add(CaseSpec spec, const std::string& where) {
+  try {
+    spec.validate();
+  } catch (const InputError& e) {
+    throw InputError(where + ": " + e.what());
+  }
+  // The static catenary (and the towline fit) exist only below the breaking strength.
+  const model::Vessel& tug = catalog_.vessel(spec.tug).vessel;
+  const double breaking_n = catalog_.towline(tug, spec.line, units::ft_to_m(spec.length_ft)).breaking_strength_n();
+  if (!(spec.mean_tension_n() < breaking_n)) {
+    throw InputError(where + ": mean_tension_lbf = " + format_value(spec.mean_tension_lbf) +
+                     ": must be below the towline's breaking strength, " +
+                     canonical_number(std::round(units::n_to_lbf(breaking_n))) + " lbf (" + spec.tug + ", " +
+                     model::to_string(spec.line) + " " + canonical_number(spec.length_ft) + " ft)");
+  }
+  const auto [it, inserted] = seen_.emplace(spec.condition_key, where);
+  if (!inserted) {
+    throw InputError(where + ": gives the same case as " + it->second + " (" + spec.tug + " / " + spec.tow + ", " +
+                     canonical_number(spec.speed_kt) + " kt, " + sea_text(spec.sea) + ", " +
+                     canonical_number(spec.heading_deg) + " deg, " + model::to_string(spec.line) + " " +
+                     canonical_number(spec.length_ft) + " ft, " + spec.mean_tension_label + ")");
+  }
+  out_.cases.push_back(std::move(spec));
+}
+
+void SweepExpander::check_towline(const model::Vessel& tug, model::LineKind line, double length_ft,
+                                  const std::string& where) const {
+  try {
+    catalog_.towline(tug, line, units::ft_to_m(length_ft));
+  } catch (const InputError& e) {
+    throw InputError(where + ": " + e.what());
+  }
+}
+
+void SweepExpander::expand_case(const CaseEntry& c) {
+  const std::string where = entry_where(sweep_.path, c.line, "case", c.label);
+  CaseSpec spec = c.spec;
+  const model::Vessel& tug = resolve_vessel(catalog_, spec.tug, where, true);
+  spec.tug = tug.name;
+  spec.tow = resolve_vessel(catalog_, spec.tow, where, false).name;
+  check_towline(tug, spec.line, spec.length_ft, where);
+  spec.seed = c.seed ? *c.seed : case_seed(c.base_seed, spec);
+  spec.condition_key = condition_key(spec, true);
+  add(std::move(spec), where);
+}
+
+void SweepExpander::expand_grid(const GridEntry& g) {
+  const std::string where = entry_where(sweep_.path, g.line, "grid", g.label);
+  g.mean_model.validate();
+  bool needs_calculated = false;
+  for (const auto& level : g.mean_tensions) needs_calculated |= level.basis == MeanTensionBasis::kCalculated;
+  for (const std::string& tug_name : g.tugs) {
+    const model::Vessel& tug = resolve_vessel(catalog_, tug_name, where, true);
+    for (const TowlineChoice& tl : g.towlines) check_towline(tug, tl.line, tl.length_ft, where);
+    for (const std::string& tow_name : g.tows) {
+      const model::Vessel& tow = resolve_vessel(catalog_, tow_name, where, false);
+      if (!g.coverage_note.empty()) out_.notes.push_back({g.label, tug.name, tow.name, g.coverage_note});
+      for (double v0_kt : g.speeds_kt) {
+        for (const SeaSpec& sea : g.seas) {
+          if (needs_calculated && !sea.wind_kt) {
+            throw InputError(where + ": a \"calculated\" mean tension needs a wind; the sea '" + sea_text(sea) +
+                             "' has no wind_kt");
+          }
+          for (double heading_deg : g.headings_deg) {
+            const GridCondition k{g, where, tug, tow, v0_kt, sea, heading_deg};
+            const std::optional<SpeedChoice> speed = grid_speed(k, needs_calculated);
+            if (speed) add_grid_cases(k, *speed);
           }
         }
       }
     }
   }
-  return out;
+}
+
+std::optional<SpeedChoice> SweepExpander::grid_speed(const GridCondition& k, bool needs_calculated) {
+  const GridEntry& g = k.grid;
+  const double v0_kt = k.nominal_speed_kt;
+  SpeedChoice speed{v0_kt, 0.0, false};
+  if (!k.sea.wind_kt) return speed;
+  // T_calc(V) of this condition in lbf (EQ-SWEEP-1).
+  auto t_calc_lbf = [&](double v_kt) {
+    double rs_n = 0.0;
+    if (g.mean_model.sea_resistance != SeaResistanceModel::kNone) {
+      if (!options_.sea_resistance) {
+        throw InputError(k.where + ": sea_resistance needs the strip-theory hook, which this caller does "
+                                   "not provide");
+      }
+      const double mu_deg =
+          g.mean_model.sea_resistance == SeaResistanceModel::kStripTheoryHead ? 180.0 : k.heading_deg;
+      rs_n = options_.sea_resistance(k.tow, v_kt, k.sea, mu_deg);
+    }
+    return units::n_to_lbf(
+        calculated_mean_tension(k.tow, v_kt, k.sea.wind_kt.value_or(0.0), k.heading_deg, rs_n, g.mean_model)
+            .total_n);
+  };
+  const auto skip = [&](std::string reason) {
+    out_.skipped.push_back({g.label, k.tug.name, k.tow.name, v0_kt, sea_text(k.sea), k.heading_deg, std::move(reason)});
+    return std::nullopt;
+  };
+  std::string reason;
+  const std::optional<SpeedChoice> chosen = choose_speed(v0_kt, g.mean_model, t_calc_lbf, &reason);
+  if (!chosen) return skip(reason);
+  speed = *chosen;
+  // A speed reduced down to another of the grid's speeds would repeat that
+  // speed's cases: the condition is skipped (thesis ch. 5: "eliminated").
+  double lower_nominal_kt = 0.0;
+  for (double v : g.speeds_kt) {
+    if (v < v0_kt) lower_nominal_kt = std::max(lower_nominal_kt, v);
+  }
+  if (speed.reduced && lower_nominal_kt > 0.0 && speed.speed_kt <= lower_nominal_kt) {
+    return skip("calculated mean tension exceeds " + format_value(g.mean_model.limit_lbf) + " lbf above " +
+                format_value(speed.speed_kt) + " kt, which the grid's " + format_value(lower_nominal_kt) +
+                " kt cases already cover");
+  }
+  if (needs_calculated && !(speed.calculated_lbf > 0.0)) {
+    return skip("calculated mean tension " + format_value(speed.calculated_lbf) +
+                " lbf is not positive (wind and sea push the tow)");
+  }
+  return speed;
+}
+
+void SweepExpander::add_grid_cases(const GridCondition& k, const SpeedChoice& speed) {
+  const GridEntry& g = k.grid;
+  for (const TowlineChoice& tl : g.towlines) {
+    for (const MeanTensionLevel& level : g.mean_tensions) {
+      CaseSpec spec;
+      spec.tug = k.tug.name;
+      spec.tow = k.tow.name;
+      spec.speed_kt = speed.speed_kt;
+      spec.nominal_speed_kt = k.nominal_speed_kt;
+      spec.sea = k.sea;
+      spec.heading_deg = k.heading_deg;
+      spec.line = tl.line;
+      spec.length_ft = tl.length_ft;
+      switch (level.basis) {  // EQ-SWEEP-2
+        case MeanTensionBasis::kCalculated:
+          spec.mean_tension_lbf = level.factor * speed.calculated_lbf;
+          break;
+        case MeanTensionBasis::kHullHalfPropeller:
+          spec.mean_tension_lbf = level.factor * hull_half_propeller_tension_lbf(k.tow, speed.speed_kt, g.mean_model);
+          break;
+        case MeanTensionBasis::kGiven:
+          spec.mean_tension_lbf = level.factor * *level.value_lbf;
+          break;
+      }
+      spec.mean_tension_label = level.label;
+      if (k.sea.wind_kt && speed.calculated_lbf > 0.0) {
+        spec.calculated_mean_tension_lbf = speed.calculated_lbf;
+      }
+      spec.days = g.days;
+      spec.sweep_label = g.label;
+      spec.seed = case_seed(g.base_seed, spec);
+      spec.condition_key = condition_key(spec, level.basis == MeanTensionBasis::kGiven);
+      add(std::move(spec), k.where);
+    }
+  }
+}
+
+}  // namespace
+
+SweepExpansion expand_sweep(const SweepFile& sweep, const io::ShipCatalog& catalog, const ExpandOptions& options) {
+  return SweepExpander(sweep, catalog, options).expand();
 }
 
 }  // namespace towdb::sweep

@@ -257,28 +257,24 @@ struct Tridiagonal {
   }
 };
 
-}  // namespace
+// The discretised line as the time steppers read it (ShallowSagModel's arrays).
+struct SagLine {
+  const std::vector<double>& elem_h_m;
+  const std::vector<double>& elem_tension_n;
+  const std::vector<double>& node_mass_kg;
+  const std::vector<double>& node_b;
+  const std::vector<double>& node_drag_kg_m;
+  double compliance_m_n;
+  double tau_floor_n;
+};
 
-HarmonicRun ShallowSagModel::run_harmonic(double amplitude_m, double omega_rad_s,
-                                          const DynamicsOptions& options) const {
-  options.validate();
-  require_in_range("harmonic extension amplitude [m]", amplitude_m, 0.0, 1e3);
-  require_in_range("harmonic extension frequency [rad/s]", omega_rad_s, 1e-4, 1e3);
-  const std::size_t n = elem_h_m_.size();
-  const std::size_t m = n - 1;  // interior nodes 1..n-1
-  const double c = compliance_m_n_;
-  const double period_s = 2.0 * kPi / omega_rad_s;
-  const int spp = options.samples_per_period;
-  const double dt_sample = period_s / spp;
-  const double ramp_s = options.ramp_cycles * period_s;
-  const bool implicit = options.integrator == Integrator::kImplicitTrapezoidal;
-  // Implicit: dt resolves the excitation period and the line's lowest period.
-  const double dt_implicit =
-      std::min(period_s / options.steps_per_period,
-               2.0 * kPi / lowest_frequency_rad_s() / options.steps_per_line_period);
-  const double newton_tol_m = options.newton_tolerance * (1.0 + amplitude_m);
-
-  auto extension = [&](double t, double* rate) {
+// The prescribed chord extension p0(t) = a env(t) sin(w t), env rising as
+// (1 - cos)/2 over the ramp; returns p0 and stores dp0/dt in *rate.
+struct HarmonicExtension {
+  double amplitude_m;
+  double omega_rad_s;
+  double ramp_s;
+  double operator()(double t, double* rate) const {
     double env = 1.0;
     double env_rate = 0.0;
     if (t < ramp_s) {
@@ -289,136 +285,279 @@ HarmonicRun ShallowSagModel::run_harmonic(double amplitude_m, double omega_rad_s
     const double cs = std::cos(omega_rad_s * t);
     *rate = amplitude_m * (env_rate * sn + env * omega_rad_s * cs);
     return amplitude_m * env * sn;
-  };
+  }
+};
+
+// Advances a SagState through time by either integrator (see the header's
+// discretisation notes); owns the Newton workspace so steps do not allocate.
+class SagStepper {
+ public:
+  SagStepper(const SagLine& line, const HarmonicExtension& extension, const DynamicsOptions& options,
+             double dt_implicit_s, double newton_tol_m)
+      : line_(line),
+        extension_(extension),
+        options_(options),
+        implicit_(options.integrator == Integrator::kImplicitTrapezoidal),
+        dt_implicit_s_(dt_implicit_s),
+        newton_tol_m_(newton_tol_m),
+        n_(line.elem_h_m.size()),
+        m_(n_ - 1),
+        diag_(m_),
+        off_(m_ > 0 ? m_ - 1 : 0),
+        rhs_(m_),
+        gvec_(m_),
+        yvec_(m_) {}
+
+  bool implicit() const { return implicit_; }
+
+  // The state at rest at t = 0 (forces and tension evaluated).
+  SagState initial_state() const {
+    SagState st;
+    st.q.assign(n_ + 1, 0.0);
+    st.v.assign(n_ + 1, 0.0);
+    st.a.assign(n_ + 1, 0.0);
+    st.f.assign(n_ + 1, 0.0);
+    double rate0 = 0.0;
+    evaluate(st, extension_(0.0, &rate0));
+    return st;
+  }
 
   // Conservative force f (string + tension-curvature, no drag), tension and
   // stability bound at state `st` and extension p0 (EQ-TOWLINE-6..8).
-  auto evaluate = [&](SagState& st, double p0) {
-    double bq = 0.0;
-    double q2 = 0.0;
-    for (std::size_t e = 0; e < n; ++e) {
-      const double dq = st.q[e + 1] - st.q[e];
-      q2 += dq * dq / elem_h_m_[e];
-      bq += node_b_[e] * st.q[e];
-    }
-    const double tau_c = (p0 - bq + 0.5 * q2) / c;
-    st.slack = tau_c < tau_floor_n_;
-    st.tau_n = st.slack ? tau_floor_n_ : tau_c;
-    double gershgorin = 0.0;
-    double rank_one = 0.0;
-    double f_left = 0.0;
-    double a_left = 0.0;
-    double slope_left = 0.0;
-    for (std::size_t e = 0; e < n; ++e) {
-      const double a = (elem_tension_n_[e] + st.tau_n) / elem_h_m_[e];
-      const double slope = (st.q[e + 1] - st.q[e]) / elem_h_m_[e];
-      const double f_right = a * (st.q[e + 1] - st.q[e]);
-      if (e > 0) {
-        const double inv_m = 1.0 / node_mass_kg_[e];
-        st.f[e] = f_right - f_left + st.tau_n * node_b_[e];
-        gershgorin = std::max(gershgorin, 2.0 * (a_left + a) * inv_m);
-        const double g = -node_b_[e] + slope_left - slope;  // d(c tau)/d q_e
-        rank_one += g * g * inv_m;
-      }
-      f_left = f_right;
-      a_left = a;
-      slope_left = slope;
-    }
-    st.omega2_bound = gershgorin + (st.slack ? 0.0 : rank_one / c);
-  };
+  void evaluate(SagState& st, double p0) const;
 
+  // Advances `st` over one sample interval [t0, t0 + dt_sample] in k equal
+  // substeps; an interval whose substeps fail (Courant limit or Newton) is
+  // redone with more. Counts steps, iterations and dt extremes into `run`.
+  void advance_interval(SagState& st, double t0, double dt_sample, HarmonicRun& run);
+
+ private:
   // Explicit kick-drift-kick step; false if dt omega_max passed the limit.
-  auto explicit_step = [&](SagState& st, double dt, double t_new, double* courant) {
-    double rate = 0.0;
-    for (std::size_t j = 1; j < n; ++j) {
-      const double inv_m = 1.0 / node_mass_kg_[j];
-      const double damp = 0.5 * dt * node_drag_kg_m_[j] * std::abs(st.v[j]) * inv_m;
-      st.v[j] = (st.v[j] + 0.5 * dt * st.f[j] * inv_m) / (1.0 + damp);
-      st.q[j] += dt * st.v[j];
-    }
-    evaluate(st, extension(t_new, &rate));
-    for (std::size_t j = 1; j < n; ++j) {
-      const double inv_m = 1.0 / node_mass_kg_[j];
-      const double damp = 0.5 * dt * node_drag_kg_m_[j] * std::abs(st.v[j]) * inv_m;
-      st.v[j] = (st.v[j] + 0.5 * dt * st.f[j] * inv_m) / (1.0 + damp);
-    }
-    *courant = dt * std::sqrt(st.omega2_bound);
-    return *courant <= options.courant_limit;
-  };
-
+  bool explicit_step(SagState& st, double dt, double t_new, double* courant) const;
   // Implicit trapezoidal (Newmark average acceleration) step solved by
-  // Newton's method; the Jacobian 4M/dt^2 + 4D|v|/dt + (T_e + tau)/h_e terms
-  // is tridiagonal, plus g g^T / c while taut (Sherman-Morrison).
-  Tridiagonal tri;
-  std::vector<double> diag(m), off(m > 0 ? m - 1 : 0), rhs(m), gvec(m), yvec(m);
-  SagState old;
-  auto implicit_step = [&](SagState& st, double dt, double t_new, int* iterations) {
-    old = st;
-    double rate = 0.0;
-    const double p0 = extension(t_new, &rate);
-    for (std::size_t j = 1; j < n; ++j) st.q[j] = old.q[j] + dt * old.v[j] + 0.5 * dt * dt * old.a[j];
-    const double q_scale = 1.0;
-    for (int it = 0; it < options.newton_max_iterations; ++it) {
+  // Newton's method; false if Newton did not converge.
+  bool implicit_step(SagState& st, double dt, double t_new, int* iterations);
+  // Newmark velocity and acceleration of `st` from its displacement.
+  void newmark_rates(SagState& st, double dt) const;
+
+  const SagLine& line_;
+  const HarmonicExtension& extension_;
+  const DynamicsOptions& options_;
+  const bool implicit_;
+  const double dt_implicit_s_;
+  const double newton_tol_m_;
+  const std::size_t n_;  // elements
+  const std::size_t m_;  // interior nodes 1..n-1
+  Tridiagonal tri_;
+  std::vector<double> diag_, off_, rhs_, gvec_, yvec_;
+  SagState old_, saved_;
+};
+
+void SagStepper::evaluate(SagState& st, double p0) const {
+  const std::size_t n = n_;
+  double bq = 0.0;
+  double q2 = 0.0;
+  for (std::size_t e = 0; e < n; ++e) {
+    const double dq = st.q[e + 1] - st.q[e];
+    q2 += dq * dq / line_.elem_h_m[e];
+    bq += line_.node_b[e] * st.q[e];
+  }
+  const double tau_c = (p0 - bq + 0.5 * q2) / line_.compliance_m_n;
+  st.slack = tau_c < line_.tau_floor_n;
+  st.tau_n = st.slack ? line_.tau_floor_n : tau_c;
+  double gershgorin = 0.0;
+  double rank_one = 0.0;
+  double f_left = 0.0;
+  double a_left = 0.0;
+  double slope_left = 0.0;
+  for (std::size_t e = 0; e < n; ++e) {
+    const double a = (line_.elem_tension_n[e] + st.tau_n) / line_.elem_h_m[e];
+    const double slope = (st.q[e + 1] - st.q[e]) / line_.elem_h_m[e];
+    const double f_right = a * (st.q[e + 1] - st.q[e]);
+    if (e > 0) {
+      const double inv_m = 1.0 / line_.node_mass_kg[e];
+      st.f[e] = f_right - f_left + st.tau_n * line_.node_b[e];
+      gershgorin = std::max(gershgorin, 2.0 * (a_left + a) * inv_m);
+      const double g = -line_.node_b[e] + slope_left - slope;  // d(c tau)/d q_e
+      rank_one += g * g * inv_m;
+    }
+    f_left = f_right;
+    a_left = a;
+    slope_left = slope;
+  }
+  st.omega2_bound = gershgorin + (st.slack ? 0.0 : rank_one / line_.compliance_m_n);
+}
+
+bool SagStepper::explicit_step(SagState& st, double dt, double t_new, double* courant) const {
+  const std::size_t n = n_;
+  double rate = 0.0;
+  for (std::size_t j = 1; j < n; ++j) {
+    const double inv_m = 1.0 / line_.node_mass_kg[j];
+    const double damp = 0.5 * dt * line_.node_drag_kg_m[j] * std::abs(st.v[j]) * inv_m;
+    st.v[j] = (st.v[j] + 0.5 * dt * st.f[j] * inv_m) / (1.0 + damp);
+    st.q[j] += dt * st.v[j];
+  }
+  evaluate(st, extension_(t_new, &rate));
+  for (std::size_t j = 1; j < n; ++j) {
+    const double inv_m = 1.0 / line_.node_mass_kg[j];
+    const double damp = 0.5 * dt * line_.node_drag_kg_m[j] * std::abs(st.v[j]) * inv_m;
+    st.v[j] = (st.v[j] + 0.5 * dt * st.f[j] * inv_m) / (1.0 + damp);
+  }
+  *courant = dt * std::sqrt(st.omega2_bound);
+  return *courant <= options_.courant_limit;
+}
+
+void SagStepper::newmark_rates(SagState& st, double dt) const {
+  for (std::size_t j = 1; j < n_; ++j) {
+    st.v[j] = 2.0 * (st.q[j] - old_.q[j]) / dt - old_.v[j];
+    st.a[j] = 2.0 * (st.v[j] - old_.v[j]) / dt - old_.a[j];
+  }
+}
+
+// The Jacobian 4M/dt^2 + 4D|v|/dt + (T_e + tau)/h_e terms is tridiagonal,
+// plus g g^T / c while taut (Sherman-Morrison).
+bool SagStepper::implicit_step(SagState& st, double dt, double t_new, int* iterations) {
+  const std::size_t n = n_;
+  const std::size_t m = m_;
+  old_ = st;
+  double rate = 0.0;
+  const double p0 = extension_(t_new, &rate);
+  for (std::size_t j = 1; j < n; ++j) st.q[j] = old_.q[j] + dt * old_.v[j] + 0.5 * dt * dt * old_.a[j];
+  const double q_scale = 1.0;
+  for (int it = 0; it < options_.newton_max_iterations; ++it) {
+    evaluate(st, p0);
+    newmark_rates(st, dt);
+    double q_max = 0.0;
+    for (std::size_t j = 1; j < n; ++j) q_max = std::max(q_max, std::abs(st.q[j]));
+    // Residual G = M a - f + D |v| v and the Jacobian.
+    for (std::size_t j = 1; j < n; ++j) {
+      const double mj = line_.node_mass_kg[j];
+      const double dj = line_.node_drag_kg_m[j];
+      rhs_[j - 1] = -(mj * st.a[j] - st.f[j] + dj * std::abs(st.v[j]) * st.v[j]);
+      const double al = (line_.elem_tension_n[j - 1] + st.tau_n) / line_.elem_h_m[j - 1];
+      const double ar = (line_.elem_tension_n[j] + st.tau_n) / line_.elem_h_m[j];
+      diag_[j - 1] = 4.0 * mj / (dt * dt) + 4.0 * dj * std::abs(st.v[j]) / dt + al + ar;
+      if (j + 1 < n) off_[j - 1] = -ar;
+      gvec_[j - 1] = -line_.node_b[j] + (st.q[j] - st.q[j - 1]) / line_.elem_h_m[j - 1] -
+                     (st.q[j + 1] - st.q[j]) / line_.elem_h_m[j];
+    }
+    tri_.factor(diag_, off_, m);
+    tri_.solve(rhs_, m);
+    if (!st.slack) {
+      yvec_ = gvec_;
+      tri_.solve(yvec_, m);
+      double gx = 0.0;
+      double gy = 0.0;
+      for (std::size_t j = 0; j < m; ++j) {
+        gx += gvec_[j] * rhs_[j];
+        gy += gvec_[j] * yvec_[j];
+      }
+      const double factor = gx / (line_.compliance_m_n + gy);
+      for (std::size_t j = 0; j < m; ++j) rhs_[j] -= factor * yvec_[j];
+    }
+    double step = 0.0;
+    for (std::size_t j = 1; j < n; ++j) {
+      st.q[j] += rhs_[j - 1];
+      step = std::max(step, std::abs(rhs_[j - 1]));
+    }
+    if (!(step <= 1e300)) break;
+    if (step <= newton_tol_m_ * (q_scale + q_max)) {
       evaluate(st, p0);
-      double q_max = 0.0;
-      for (std::size_t j = 1; j < n; ++j) {
-        st.v[j] = 2.0 * (st.q[j] - old.q[j]) / dt - old.v[j];
-        st.a[j] = 2.0 * (st.v[j] - old.v[j]) / dt - old.a[j];
-        q_max = std::max(q_max, std::abs(st.q[j]));
-      }
-      // Residual G = M a - f + D |v| v and the Jacobian.
-      for (std::size_t j = 1; j < n; ++j) {
-        const double mj = node_mass_kg_[j];
-        const double dj = node_drag_kg_m_[j];
-        rhs[j - 1] = -(mj * st.a[j] - st.f[j] + dj * std::abs(st.v[j]) * st.v[j]);
-        const double al = (elem_tension_n_[j - 1] + st.tau_n) / elem_h_m_[j - 1];
-        const double ar = (elem_tension_n_[j] + st.tau_n) / elem_h_m_[j];
-        diag[j - 1] = 4.0 * mj / (dt * dt) + 4.0 * dj * std::abs(st.v[j]) / dt + al + ar;
-        if (j + 1 < n) off[j - 1] = -ar;
-        gvec[j - 1] = -node_b_[j] + (st.q[j] - st.q[j - 1]) / elem_h_m_[j - 1] -
-                      (st.q[j + 1] - st.q[j]) / elem_h_m_[j];
-      }
-      tri.factor(diag, off, m);
-      tri.solve(rhs, m);
-      if (!st.slack) {
-        yvec = gvec;
-        tri.solve(yvec, m);
-        double gx = 0.0;
-        double gy = 0.0;
-        for (std::size_t j = 0; j < m; ++j) {
-          gx += gvec[j] * rhs[j];
-          gy += gvec[j] * yvec[j];
-        }
-        const double factor = gx / (c + gy);
-        for (std::size_t j = 0; j < m; ++j) rhs[j] -= factor * yvec[j];
-      }
-      double step = 0.0;
-      for (std::size_t j = 1; j < n; ++j) {
-        st.q[j] += rhs[j - 1];
-        step = std::max(step, std::abs(rhs[j - 1]));
-      }
-      if (!(step <= 1e300)) break;
-      if (step <= newton_tol_m * (q_scale + q_max)) {
-        evaluate(st, p0);
-        for (std::size_t j = 1; j < n; ++j) {
-          st.v[j] = 2.0 * (st.q[j] - old.q[j]) / dt - old.v[j];
-          st.a[j] = 2.0 * (st.v[j] - old.v[j]) / dt - old.a[j];
-        }
-        *iterations = it + 1;
-        return true;
+      newmark_rates(st, dt);
+      *iterations = it + 1;
+      return true;
+    }
+  }
+  *iterations = options_.newton_max_iterations;
+  return false;
+}
+
+void SagStepper::advance_interval(SagState& st, double t0, double dt_sample, HarmonicRun& run) {
+  saved_ = st;
+  int k_sub = implicit_ ? std::max(1, static_cast<int>(std::ceil(dt_sample / dt_implicit_s_ - 1e-9)))
+                        : std::max(1, static_cast<int>(std::ceil(dt_sample * std::sqrt(st.omega2_bound) /
+                                                                 options_.courant_target)));
+  for (int attempt = 0;; ++attempt) {
+    if (attempt > 24 || k_sub > (1 << 24)) {
+      throw NumericalError(std::string("shallow-sag ") + (implicit_ ? "implicit" : "explicit") +
+                           " time stepping: no acceptable substep at t = " + format_value(t0) +
+                           " s (iteration " + std::to_string(attempt) + ", residual tau " +
+                           format_value(st.tau_n) + " N)");
+    }
+    const double dt = dt_sample / k_sub;
+    bool ok = true;
+    double worst = 0.0;  // explicit: dt omega_max of the rejected substep
+    for (int i = 0; i < k_sub && ok; ++i) {
+      const double t_new = t0 + dt_sample * (i + 1) / k_sub;
+      ++run.steps;
+      if (implicit_) {
+        int iterations = 0;
+        ok = implicit_step(st, dt, t_new, &iterations);
+        run.newton_iterations += iterations;
+      } else {
+        double courant = 0.0;
+        ok = explicit_step(st, dt, t_new, &courant);
+        if (!ok) worst = std::isfinite(courant) ? courant : 0.0;
       }
     }
-    *iterations = options.newton_max_iterations;
-    return false;
-  };
+    if (ok) {
+      run.min_dt_s = std::min(run.min_dt_s, dt);
+      run.max_dt_s = std::max(run.max_dt_s, dt);
+      return;
+    }
+    st = saved_;
+    k_sub = std::max(2 * k_sub, static_cast<int>(std::ceil(k_sub * worst / options_.courant_target)));
+  }
+}
 
-  SagState st;
-  st.q.assign(n + 1, 0.0);
-  st.v.assign(n + 1, 0.0);
-  st.a.assign(n + 1, 0.0);
-  st.f.assign(n + 1, 0.0);
-  double rate0 = 0.0;
-  evaluate(st, extension(0.0, &rate0));
+// Throws NumericalError unless the state after sample `sample_index` (ending
+// at t_end) is finite.
+void require_finite_state(const SagState& st, std::size_t n, double t_end, long long sample_index) {
+  double q_sum = 0.0;
+  for (std::size_t j = 1; j < n; ++j) q_sum += std::abs(st.q[j]) + std::abs(st.v[j]);
+  if (!std::isfinite(q_sum) || !std::isfinite(st.tau_n)) {
+    throw NumericalError("shallow-sag integration produced a non-finite state at t = " +
+                         format_value(t_end) + " s (sample " + std::to_string(sample_index + 1) +
+                         ", residual tau = " + format_value(st.tau_n) + " N)");
+  }
+}
+
+// Cycle-to-cycle change of tau, max_k |tau_k - tau_k(previous)|, as a fraction
+// of the cycle's tau range (at least floor_n); stored with the verdict in `run`.
+void measure_periodicity(const std::vector<TensionSample>& cycle, const std::vector<TensionSample>& previous,
+                         double floor_n, double tolerance, HarmonicRun& run) {
+  double lo = cycle[0].tau_n, hi = cycle[0].tau_n, change = 0.0;
+  for (std::size_t k = 0; k < cycle.size(); ++k) {
+    lo = std::min(lo, cycle[k].tau_n);
+    hi = std::max(hi, cycle[k].tau_n);
+    change = std::max(change, std::abs(cycle[k].tau_n - previous[k].tau_n));
+  }
+  run.periodicity_change = change / std::max(hi - lo, floor_n);
+  run.periodic = run.periodicity_change <= tolerance;
+}
+
+}  // namespace
+
+HarmonicRun ShallowSagModel::run_harmonic(double amplitude_m, double omega_rad_s,
+                                          const DynamicsOptions& options) const {
+  options.validate();
+  require_in_range("harmonic extension amplitude [m]", amplitude_m, 0.0, 1e3);
+  require_in_range("harmonic extension frequency [rad/s]", omega_rad_s, 1e-4, 1e3);
+  const std::size_t n = elem_h_m_.size();
+  const double period_s = 2.0 * kPi / omega_rad_s;
+  const int spp = options.samples_per_period;
+  const double dt_sample = period_s / spp;
+  // Implicit: dt resolves the excitation period and the line's lowest period.
+  const double dt_implicit =
+      std::min(period_s / options.steps_per_period,
+               2.0 * kPi / lowest_frequency_rad_s() / options.steps_per_line_period);
+  const double newton_tol_m = options.newton_tolerance * (1.0 + amplitude_m);
+
+  const SagLine line{elem_h_m_,          elem_tension_n_, node_mass_kg_,  node_b_,
+                     node_drag_kg_m_,    compliance_m_n_, tau_floor_n_};
+  const HarmonicExtension extension{amplitude_m, omega_rad_s, options.ramp_cycles * period_s};
+  SagStepper stepper(line, extension, options, dt_implicit, newton_tol_m);
+  SagState st = stepper.initial_state();
 
   HarmonicRun run;
   run.amplitude_m = amplitude_m;
@@ -429,8 +568,8 @@ HarmonicRun ShallowSagModel::run_harmonic(double amplitude_m, double omega_rad_s
   run.min_tau_n = st.tau_n;
 
   std::vector<TensionSample> cycle(static_cast<std::size_t>(spp)), previous;
-  SagState saved;
   const int ramp_samples = options.ramp_cycles * spp;
+  const double periodicity_floor_n = 1e-12 * (std::abs(amplitude_m) / compliance_m_n_ + horizontal_tension_n_);
   // Ramp samples first (c_idx = -1), then full-amplitude cycles.
   for (int c_idx = -1; c_idx < options.max_cycles; ++c_idx) {
     const bool ramp = c_idx < 0;
@@ -444,66 +583,15 @@ HarmonicRun ShallowSagModel::run_harmonic(double amplitude_m, double omega_rad_s
         const double p0 = extension(t0, &p0_rate);
         cycle[static_cast<std::size_t>(k)] = {p0, p0_rate, st.tau_n, st.slack};
       }
-      // Advance one sample interval with k_sub equal substeps; an interval
-      // whose substeps fail (Courant limit or Newton) is redone with more.
-      saved = st;
-      int k_sub = implicit ? std::max(1, static_cast<int>(std::ceil(dt_sample / dt_implicit - 1e-9)))
-                           : std::max(1, static_cast<int>(std::ceil(dt_sample * std::sqrt(st.omega2_bound) /
-                                                                    options.courant_target)));
-      for (int attempt = 0;; ++attempt) {
-        if (attempt > 24 || k_sub > (1 << 24)) {
-          throw NumericalError(std::string("shallow-sag ") + (implicit ? "implicit" : "explicit") +
-                               " time stepping: no acceptable substep at t = " + format_value(t0) +
-                               " s (iteration " + std::to_string(attempt) + ", residual tau " +
-                               format_value(st.tau_n) + " N)");
-        }
-        const double dt = dt_sample / k_sub;
-        bool ok = true;
-        double worst = 0.0;  // explicit: dt omega_max of the rejected substep
-        for (int i = 0; i < k_sub && ok; ++i) {
-          const double t_new = t0 + dt_sample * (i + 1) / k_sub;
-          ++run.steps;
-          if (implicit) {
-            int iterations = 0;
-            ok = implicit_step(st, dt, t_new, &iterations);
-            run.newton_iterations += iterations;
-          } else {
-            double courant = 0.0;
-            ok = explicit_step(st, dt, t_new, &courant);
-            if (!ok) worst = std::isfinite(courant) ? courant : 0.0;
-          }
-        }
-        if (ok) {
-          run.min_dt_s = std::min(run.min_dt_s, dt);
-          run.max_dt_s = std::max(run.max_dt_s, dt);
-          break;
-        }
-        st = saved;
-        k_sub = std::max(2 * k_sub, static_cast<int>(std::ceil(k_sub * worst / options.courant_target)));
-      }
-      double q_sum = 0.0;
-      for (std::size_t j = 1; j < n; ++j) q_sum += std::abs(st.q[j]) + std::abs(st.v[j]);
-      if (!std::isfinite(q_sum) || !std::isfinite(st.tau_n)) {
-        throw NumericalError("shallow-sag integration produced a non-finite state at t = " +
-                             format_value(t0 + dt_sample) + " s (sample " +
-                             std::to_string(sample_index + 1) + ", residual tau = " +
-                             format_value(st.tau_n) + " N)");
-      }
+      stepper.advance_interval(st, t0, dt_sample, run);
+      require_finite_state(st, n, t0 + dt_sample, sample_index);
       run.max_tau_n = std::max(run.max_tau_n, st.tau_n);
       run.min_tau_n = std::min(run.min_tau_n, st.tau_n);
     }
     if (ramp) continue;
     run.cycles = c_idx + 1;
     if (!previous.empty()) {
-      double lo = cycle[0].tau_n, hi = cycle[0].tau_n, change = 0.0;
-      for (std::size_t k = 0; k < cycle.size(); ++k) {
-        lo = std::min(lo, cycle[k].tau_n);
-        hi = std::max(hi, cycle[k].tau_n);
-        change = std::max(change, std::abs(cycle[k].tau_n - previous[k].tau_n));
-      }
-      const double floor_n = 1e-12 * (std::abs(amplitude_m) / c + horizontal_tension_n_);
-      run.periodicity_change = change / std::max(hi - lo, floor_n);
-      run.periodic = run.periodicity_change <= options.periodicity_tolerance;
+      measure_periodicity(cycle, previous, periodicity_floor_n, options.periodicity_tolerance, run);
       if (run.periodic && run.cycles >= options.min_cycles) break;
     }
     previous = cycle;

@@ -14,6 +14,7 @@
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
 #include "common/units.hpp"
+#include "io/csv.hpp"
 #include "sea/spectrum.hpp"
 
 namespace towdb::validation {
@@ -48,21 +49,6 @@ std::string fixed(double v, int digits) {
 }
 
 std::string percent(double share) { return std::isfinite(share) ? fixed(100.0 * share, 0) + " %" : "n/a"; }
-
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> out;
-  std::string field;
-  for (char c : line) {
-    if (c == ',') {
-      out.push_back(field);
-      field.clear();
-    } else {
-      field += c;
-    }
-  }
-  out.push_back(field);
-  return out;
-}
 
 bool parse_double(const std::string& s, double& v) {
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
@@ -443,7 +429,7 @@ std::vector<CaseOutcome> parse_journal(const std::string& text) {
       header = false;
       if (line == kJournalHeader) continue;
     }
-    const std::vector<std::string> f = split_csv(line);
+    const std::vector<std::string> f = io::csv::split_plain(line);
     if (f.size() != kJournalColumns) continue;
     CaseOutcome c;
     sweep::CalibrationRow& r = c.row;

@@ -70,6 +70,7 @@ def test_hs_is_answered_through_the_equivalent_wind(db):  # python-1b
     # EQ-QUERY-10: Hs = 0.2092 U^2 / g; 30 kt = 15.433 m/s -> 5.0811 m = 16.670 ft.
     by_hs = db.query(**{k: v for k, v in README_QUESTION.items() if k != "wind_kt"}, hs_ft=16.67035)
     assert abs(by_hs["equivalent_wind_kt"] - 30.0) < 1e-3
+    assert any(w["kind"] == "equivalent_wind" for w in by_hs["warnings"])  # named as by `towdb query --json`
     assert abs(by_hs["dynamic_999_kips"] / db.query(**README_QUESTION)["dynamic_999_kips"] - 1.0) < 1e-4
     assert db.query(**README_QUESTION)["equivalent_wind_kt"] is None
 

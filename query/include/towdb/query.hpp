@@ -49,6 +49,24 @@ struct QueryWarning {
   std::string message;
 };
 
+// The name of a TOWDB_QUERY_WARN_* kind as the JSON outputs write it (the
+// CLI's `warnings[].kind`, the Python module's "kind"); "other" for a kind
+// this header does not know.
+inline const char* warning_kind_name(int kind) {
+  switch (kind) {
+    case TOWDB_QUERY_WARN_EXTRAPOLATED: return "extrapolated";
+    case TOWDB_QUERY_WARN_ABOVE_BREAKING: return "above_breaking_strength";
+    case TOWDB_QUERY_WARN_SLACK: return "slack_prone";
+    case TOWDB_QUERY_WARN_NOT_MONOTONE: return "not_monotone";
+    case TOWDB_QUERY_WARN_INCOMPLETE_GRID: return "incomplete_grid";
+    case TOWDB_QUERY_WARN_HIGH_TENSION: return "high_tension";
+    case TOWDB_QUERY_WARN_BREAKING_DIFFERS: return "breaking_strength_differs";
+    case TOWDB_QUERY_WARN_ABOVE_CAPACITY: return "above_tug_capacity";
+    case TOWDB_QUERY_WARN_EQUIVALENT_WIND: return "equivalent_wind";
+    default: return "other";
+  }
+}
+
 struct QueryResult {
   std::string tug, tow;  // the database's names of the matched vessels (towdb_query_names)
   towdb_query_result values{};
