@@ -66,6 +66,17 @@ BasisLookup basis_of_sweep(const sweep::SweepFile& file, const std::string& sour
   return {DatabaseBasis{*found, source}, ""};
 }
 
+// Whether the database's vessels table holds this exact ship file.
+bool database_has_ship_file(const std::filesystem::path& db_path, const model::Vessel& v) {
+  store::Database db = store::Database::open(db_path, store::Database::Mode::kReadOnly);
+  store::Statement st = db.prepare("SELECT count(*) FROM vessels WHERE name = ? AND content_sha256 = ?");
+  st.bind(1, v.name).bind(2, v.content_sha256);
+  st.step();
+  return st.column_int(0) > 0;
+}
+
+}  // namespace
+
 const char* propeller_name(propulsion::TowPropellerState s) {
   switch (s) {
     case propulsion::TowPropellerState::kLocked: return "locked";
@@ -83,17 +94,6 @@ const char* sea_resistance_name(sweep::SeaResistanceModel m) {
   }
   return "none";
 }
-
-// Whether the database's vessels table holds this exact ship file.
-bool database_has_ship_file(const std::filesystem::path& db_path, const model::Vessel& v) {
-  store::Database db = store::Database::open(db_path, store::Database::Mode::kReadOnly);
-  store::Statement st = db.prepare("SELECT count(*) FROM vessels WHERE name = ? AND content_sha256 = ?");
-  st.bind(1, v.name).bind(2, v.content_sha256);
-  st.step();
-  return st.column_int(0) > 0;
-}
-
-}  // namespace
 
 simulation::CaseOptions build_case_options() {
   simulation::CaseOptions o;

@@ -62,6 +62,11 @@ CalculatedMeanTension calculated_mean_tension(const DatabaseBasis& basis, const 
                                               const std::filesystem::path& db_path, const std::string& tow_name,
                                               double speed_kt, double wind_kt, double heading_deg);
 
+// The sweep-file words for the tow propeller ("locked", "free", "removed")
+// and the sea resistance ("none", "strip-theory-head", "strip-theory").
+const char* propeller_name(propulsion::TowPropellerState s);
+const char* sea_resistance_name(sweep::SeaResistanceModel m);
+
 // The model as the sweep-file keys write it, e.g. {"hull_margin": 0.1,
 // "propeller": "locked", "mean_tension_wind": "head", "sea_resistance":
 // "strip-theory-head"}.

@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "common/error.hpp"
+#include "database_basis.hpp"
 #include "output.hpp"
 #include "store/database.hpp"
 #include "towdb/query.hpp"
@@ -48,15 +49,13 @@ std::vector<Group> read_groups(const std::filesystem::path& db_path) {
   return out;
 }
 
-const char* line_text(model::LineKind k) { return k == model::LineKind::kWire ? "wire" : "fiber"; }
-
 // The sweep's first grid that holds the group; nullptr when none does.
 const sweep::GridEntry* source_grid(const sweep::SweepFile& sweep, const Group& g) {
   for (const sweep::GridEntry& e : sweep.grids) {
     const bool tug = std::find(e.tugs.begin(), e.tugs.end(), g.tug) != e.tugs.end();
     const bool tow = std::find(e.tows.begin(), e.tows.end(), g.tow) != e.tows.end();
     const bool line = std::any_of(e.towlines.begin(), e.towlines.end(),
-                                  [&](const sweep::TowlineChoice& c) { return line_text(c.line) == g.line; });
+                                  [&](const sweep::TowlineChoice& c) { return model::to_string(c.line) == g.line; });
     if (tug && tow && line) return &e;
   }
   return nullptr;
@@ -179,7 +178,6 @@ RefinePlan plan_refinement(const std::filesystem::path& db_path, const sweep::Sw
   const std::vector<Group> groups = read_groups(db_path);
   query::Database db(db_path.string(), TOWDB_QUERY_SPACE_AUTO);
   RefinePlan plan;
-  std::vector<const sweep::GridEntry*> sources;
   for (const Group& g : groups) {
     const std::string name = g.tug + " / " + g.tow + " / " + g.line;
     const sweep::GridEntry* src = source_grid(sweep, g);
@@ -201,7 +199,6 @@ RefinePlan plan_refinement(const std::filesystem::path& db_path, const sweep::Sw
         c.cases = static_cast<int>(others);
         score_cell(db, g, &c);
         plan.cells.push_back(c);
-        sources.push_back(src);
       }
     }
   }
@@ -229,17 +226,14 @@ RefinePlan plan_refinement(const std::filesystem::path& db_path, const sweep::Sw
   for (const Group& g : groups) {
     std::vector<double> mids;
     RefineAxis axis = RefineAxis::kHeading;
-    const sweep::GridEntry* src = nullptr;
-    for (std::size_t i = 0; i < plan.cells.size(); ++i) {
-      const CellScore& c = plan.cells[i];
+    for (const CellScore& c : plan.cells) {
       if (!c.chosen || c.tug != g.tug || c.tow != g.tow || c.line != g.line) continue;
       mids.push_back(0.5 * (c.lo + c.hi));
       axis = c.axis;
-      src = sources[i];
     }
     if (mids.empty()) continue;
     std::sort(mids.begin(), mids.end());
-    plan.grids.push_back(refinement_grid(*src, g, axis, mids));
+    plan.grids.push_back(refinement_grid(*source_grid(sweep, g), g, axis, mids));
   }
   std::vector<CellScore> sorted;
   for (std::size_t i : order) sorted.push_back(plan.cells[i]);
@@ -261,7 +255,7 @@ std::string grids_toml(const std::vector<sweep::GridEntry>& grids) {
        << "headings_deg = " << toml_list(e.headings_deg) << "\n"
        << "towlines = [\n";
     for (const sweep::TowlineChoice& c : e.towlines) {
-      os << "  { line = \"" << line_text(c.line) << "\", length_ft = " << toml_number(c.length_ft) << " },\n";
+      os << "  { line = \"" << model::to_string(c.line) << "\", length_ft = " << toml_number(c.length_ft) << " },\n";
     }
     os << "]\nmean_tensions = [\n";
     for (const sweep::MeanTensionLevel& l : e.mean_tensions) {
@@ -278,20 +272,12 @@ std::string grids_toml(const std::vector<sweep::GridEntry>& grids) {
     const sweep::MeanTensionModel& m = e.mean_model;
     os << "base_seed = " << e.base_seed << "\n"
        << "hull_margin = " << toml_number(m.hull_margin) << "\n"
-       << "propeller = \""
-       << (m.propeller == propulsion::TowPropellerState::kLocked         ? "locked"
-           : m.propeller == propulsion::TowPropellerState::kFreeSpinning ? "free"
-                                                                          : "removed")
-       << "\"\n"
+       << "propeller = \"" << propeller_name(m.propeller) << "\"\n"
        << "mean_tension_wind = \"" << (m.wind == sweep::MeanTensionWind::kHead ? "head" : "heading") << "\"\n"
        << "mean_tension_limit_lbf = " << toml_number(m.limit_lbf) << "\n"
        << "speed_step_kt = " << toml_number(m.speed_step_kt) << "\n"
        << "min_speed_kt = " << toml_number(m.min_speed_kt) << "\n"
-       << "sea_resistance = \""
-       << (m.sea_resistance == sweep::SeaResistanceModel::kNone              ? "none"
-           : m.sea_resistance == sweep::SeaResistanceModel::kStripTheoryHead ? "strip-theory-head"
-                                                                              : "strip-theory")
-       << "\"\n";
+       << "sea_resistance = \"" << sea_resistance_name(m.sea_resistance) << "\"\n";
   }
   return os.str();
 }

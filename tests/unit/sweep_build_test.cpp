@@ -488,14 +488,9 @@ TEST(SweepBuild, LowestPointIsStoredAndFilledForOlderFits) {  // sweep-build-14
     store::Database d = store::Database::open(db, store::Database::Mode::kReadWrite);
     d.exec("UPDATE towline_fits SET lowest_elevation_ft = NULL");
   }
-  Fixture one;
-  one.cases.resize(1);
-  const sweep::BuildSummary s1 = sweep::run_build(db, f.file, one.cases, f.catalog, make_test_runner(), [&] {
-    sweep::BuildOptions b = o;
-    b.threads = 1;
-    b.progress = false;
-    return b;
-  }());
+  o.threads = 1;
+  o.progress = false;
+  const sweep::BuildSummary s1 = sweep::run_build(db, f.file, {f.cases.front()}, f.catalog, make_test_runner(), o);
   EXPECT_EQ(s1.lowest_points_filled, 1);
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM towline_fits WHERE lowest_elevation_ft IS NULL"), fits - 1);
 }
