@@ -9,7 +9,7 @@
 #include "common/random.hpp"
 #include "common/units.hpp"
 #include "store/database.hpp"
-#include "sweep/simulation_runner.hpp"
+#include "sweep/build/simulation_runner.hpp"
 #include "towdb/query.hpp"
 
 namespace towdb::cli {

@@ -24,7 +24,7 @@
 #include "output.hpp"
 #include "plot.hpp"
 #include "store/database.hpp"
-#include "sweep/writer.hpp"
+#include "sweep/build/writer.hpp"
 
 namespace towdb::cli {
 

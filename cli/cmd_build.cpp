@@ -1,6 +1,6 @@
 // towdb build | status | sweep calibration: the database generator.
 //   build   computes every case of a sweep file into a database (parallel,
-//           resumable, incremental; generator/sweep/build.hpp)
+//           resumable, incremental; generator/sweep/build/build.hpp)
 //   status  summarises a database (builds, cases by status, failures)
 //   sweep calibration  writes the Appendix C calibration sweep from its CSV
 #include <atomic>
@@ -18,9 +18,9 @@
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
 #include "output.hpp"
-#include "sweep/calibration.hpp"
-#include "sweep/numerics.hpp"
-#include "sweep/simulation_runner.hpp"
+#include "sweep/spec/calibration.hpp"
+#include "sweep/build/numerics.hpp"
+#include "sweep/build/simulation_runner.hpp"
 #include "sweep/sweep.hpp"
 
 namespace towdb::cli {
@@ -107,7 +107,7 @@ int run_dry(const Context& ctx, const BuildArgs& a, const sweep::SweepFile& file
     if (sweep::computes(p.state, false)) ++to_compute;
   }
   // Whether a build here would be refused for computing with another machine
-  // kind's numerics than the database's (sweep/numerics.hpp).
+  // kind's numerics than the database's (sweep/build/numerics.hpp).
   const std::optional<std::string> recorded = db ? sweep::recorded_numerics_fingerprint(*db) : std::nullopt;
   const std::string here = sweep::numerics_fingerprint();
   const bool numerics_refusal = recorded && *recorded != here && to_compute > 0;

@@ -9,8 +9,8 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "output.hpp"
-#include "sweep/grid_tension.hpp"
-#include "sweep/simulation_runner.hpp"
+#include "sweep/spec/grid_tension.hpp"
+#include "sweep/build/simulation_runner.hpp"
 
 namespace towdb::cli {
 

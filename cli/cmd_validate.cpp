@@ -26,7 +26,7 @@
 #include "common/progress.hpp"
 #include "output.hpp"
 #include "plot.hpp"
-#include "sweep/calibration.hpp"
+#include "sweep/spec/calibration.hpp"
 #include "validation/validation.hpp"
 
 namespace towdb::cli {

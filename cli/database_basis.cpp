@@ -5,8 +5,8 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "store/database.hpp"
-#include "sweep/simulation_runner.hpp"
-#include "sweep/sweep_file.hpp"
+#include "sweep/build/simulation_runner.hpp"
+#include "sweep/spec/sweep_file.hpp"
 
 namespace towdb::cli {
 

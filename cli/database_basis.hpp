@@ -27,7 +27,7 @@
 #include "io/ship_file.hpp"
 #include "propulsion/mean_tension.hpp"
 #include "simulation/case_runner.hpp"
-#include "sweep/grid_tension.hpp"
+#include "sweep/spec/grid_tension.hpp"
 
 namespace towdb::cli {
 

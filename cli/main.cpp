@@ -6,7 +6,7 @@
 #include "cli.hpp"
 #include "common/error.hpp"
 #include "common/version.hpp"
-#include "sweep/numerics.hpp"
+#include "sweep/build/numerics.hpp"
 
 int main(int argc, char** argv) {
   using towdb::cli::Context;

@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-#include "sweep/sweep_file.hpp"
+#include "sweep/spec/sweep_file.hpp"
 
 namespace towdb::cli {
 

@@ -1,6 +1,6 @@
 // The one progress line of the command-line tools: a line on stderr redrawn
 // in place ("\r" text), with a bar of '#' cells. `towdb build`
-// (sweep/progress.hpp), `towdb simulate` and `towdb validate` format their own
+// (sweep/build/progress.hpp), `towdb simulate` and `towdb validate` format their own
 // text around bar(); this class decides whether and when the line is drawn.
 // It draws only when enabled and stderr is a terminal, so that logs and pipes
 // stay clean.

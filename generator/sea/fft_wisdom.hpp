@@ -16,7 +16,7 @@
 // all processes on machines that take the stored plan. Where FFTW refuses it,
 // FFTW_ESTIMATE's plan is used, which itself depends on the processor's
 // SIMD codelets (`towdb simulate --json` reports which plan: record.fft_plan;
-// sweep/numerics.hpp guards databases against mixing machine kinds).
+// sweep/build/numerics.hpp guards databases against mixing machine kinds).
 //
 // Regenerate (after an FFTW upgrade, or for another record length; a few
 // minutes): build, then

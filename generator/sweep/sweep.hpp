@@ -82,16 +82,23 @@
 #ifndef TOWDB_SWEEP_SWEEP_HPP
 #define TOWDB_SWEEP_SWEEP_HPP
 
-#include "sweep/build.hpp"        // run_build, plan_build, BuildOptions
-#include "sweep/calibration.hpp"  // Appendix C CSV -> sweep file
-#include "sweep/case.hpp"         // CaseSpec, CaseOutcome, CaseRunner, set_default_case_runner
-#include "sweep/distributed.hpp"  // the one MPI interface
-#include "sweep/grid_tension.hpp" // EQ-SWEEP-1..3
-#include "sweep/keys.hpp"         // EQ-SWEEP-4..7
-#include "sweep/progress.hpp"     // the progress line
-#include "sweep/serialize.hpp"    // bit-exact messages between ranks
-#include "sweep/status.hpp"       // towdb status
-#include "sweep/sweep_file.hpp"   // sweep files and their expansion
-#include "sweep/writer.hpp"       // the one database writer
+// The specification (spec/, library towdb::sweep_spec): what a sweep is.
+#include "sweep/spec/calibration.hpp"   // Appendix C CSV -> sweep file
+#include "sweep/spec/case.hpp"          // CaseSpec, CaseOutcome, CaseRunner
+#include "sweep/spec/grid_tension.hpp"  // EQ-SWEEP-1..3
+#include "sweep/spec/keys.hpp"          // EQ-SWEEP-4..7
+#include "sweep/spec/sweep_file.hpp"    // sweep files and their expansion
+
+// The build (build/, library towdb::sweep): how a database is made from it.
+// build_lock, build_mpi and build_work are build.cpp's own parts (the file
+// lock, the MPI coordinator and workers, the threads' work list).
+#include "sweep/build/build.hpp"              // run_build, plan_build, BuildOptions
+#include "sweep/build/distributed.hpp"        // the one MPI interface
+#include "sweep/build/numerics.hpp"           // the machine's numerics fingerprint
+#include "sweep/build/progress.hpp"           // the progress line
+#include "sweep/build/serialize.hpp"          // bit-exact messages between ranks
+#include "sweep/build/simulation_runner.hpp"  // the physics chain as the case runner
+#include "sweep/build/status.hpp"             // towdb status
+#include "sweep/build/writer.hpp"             // the one database writer
 
 #endif  // TOWDB_SWEEP_SWEEP_HPP

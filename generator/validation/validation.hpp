@@ -51,7 +51,7 @@
 
 #include "io/ship_file.hpp"
 #include "simulation/case_runner.hpp"
-#include "sweep/calibration.hpp"
+#include "sweep/spec/calibration.hpp"
 
 namespace towdb::validation {
 

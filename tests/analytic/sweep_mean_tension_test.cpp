@@ -1,4 +1,4 @@
-// Grid mean tensions of the sweep (generator/sweep/grid_tension.hpp) against
+// Grid mean tensions of the sweep (generator/sweep/spec/grid_tension.hpp) against
 // closed forms in the thesis's and the Towing Manual's own units.
 // Test plan:
 //   sweep-tension-1  YRBM (no propeller), no wind: T_calc = 1.10 x 1.10 x (1/2) rho S V^2 C_T and
@@ -16,7 +16,7 @@
 #include "common/units.hpp"
 #include "io/ship_file.hpp"
 #include "propulsion/tow_propeller.hpp"
-#include "sweep/grid_tension.hpp"
+#include "sweep/spec/grid_tension.hpp"
 #include "test_support.hpp"
 
 namespace towdb::test {

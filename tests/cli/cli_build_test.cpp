@@ -25,7 +25,7 @@
 #include <nlohmann/json.hpp>
 #include <sqlite3.h>
 
-#include "sweep/numerics.hpp"
+#include "sweep/build/numerics.hpp"
 #include "sweep/sweep.hpp"
 #include "sweep_test_runner.hpp"
 #include "test_support.hpp"

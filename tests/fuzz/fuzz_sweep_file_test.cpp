@@ -1,4 +1,4 @@
-// Fuzzer of the sweep file parser and expander (generator/sweep/sweep_file:
+// Fuzzer of the sweep file parser and expander (generator/sweep/spec/sweep_file:
 // parse_sweep, expand_sweep), seeded from db/sweeps/ and the unit tests'
 // small sweep (tests/fuzz/corpus/sweeps). Properties (issue 20 items 2-3;
 // docs/hardening.md):
@@ -26,7 +26,7 @@
 #include "common/error.hpp"
 #include "fuzz_checks.hpp"
 #include "fuzz_support.hpp"
-#include "sweep/sweep_file.hpp"
+#include "sweep/spec/sweep_file.hpp"
 #include "test_support.hpp"
 
 namespace towdb::fuzz {

@@ -1,4 +1,4 @@
-// The MPI-distributed build (generator/sweep/distributed.hpp) under
+// The MPI-distributed build (generator/sweep/build/distributed.hpp) under
 // `mpirun -np 2`: rank 0 coordinates and writes, rank 1 computes.
 // Test plan:
 //   sweep-mpi-1  the database of a 2-rank build equals a single-process 1-thread build, bit for

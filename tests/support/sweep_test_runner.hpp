@@ -33,7 +33,7 @@
 #include "common/error.hpp"
 #include "common/random.hpp"
 #include "statistics/fit.hpp"
-#include "sweep/case.hpp"
+#include "sweep/spec/case.hpp"
 
 namespace towdb::test {
 

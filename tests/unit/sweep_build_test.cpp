@@ -1,4 +1,4 @@
-// The database builder (generator/sweep/build.hpp) with the closed-form test
+// The database builder (generator/sweep/build/build.hpp) with the closed-form test
 // runner of tests/support/sweep_test_runner.hpp.
 // Test plan:
 //   sweep-build-1  a build stores every case, its fit, its results and every day; the stored
@@ -17,7 +17,7 @@
 //   sweep-build-9  a stop request (SIGINT) leaves unstarted cases pending and the build
 //                  'interrupted'; the next build continues without --resume
 //   sweep-build-10 the progress line: done/total, rate, ETA, failures
-//   sweep-build-11 the numerics fingerprint (sweep/numerics.hpp): 16 hex digits, the same
+//   sweep-build-11 the numerics fingerprint (sweep/build/numerics.hpp): 16 hex digits, the same
 //                  from any thread; an MPI rank with another one is refused by name
 //   sweep-build-12 a database records the fingerprint of its first build; a build that
 //                  would compute cases with another one is refused untouched, one with
@@ -41,8 +41,8 @@
 
 #include "common/units.hpp"
 #include "store/database.hpp"
-#include "sweep/numerics.hpp"
-#include "sweep/progress.hpp"
+#include "sweep/build/numerics.hpp"
+#include "sweep/build/progress.hpp"
 #include "sweep/sweep.hpp"
 #include "sweep_test_runner.hpp"
 #include "test_support.hpp"

@@ -20,8 +20,8 @@
 
 #include <gtest/gtest.h>
 
-#include "sweep/calibration.hpp"
-#include "sweep/serialize.hpp"
+#include "sweep/spec/calibration.hpp"
+#include "sweep/build/serialize.hpp"
 #include "sweep/sweep.hpp"
 #include "sweep_test_runner.hpp"
 #include "test_support.hpp"

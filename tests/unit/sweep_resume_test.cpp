@@ -1,5 +1,5 @@
 // kill -9 in the middle of a build, then --resume: the database equals an
-// uninterrupted build (generator/sweep/build.hpp, EQ-SWEEP-7).
+// uninterrupted build (generator/sweep/build/build.hpp, EQ-SWEEP-7).
 // Test plan:
 //   sweep-resume-1  a child process builds with a runner that sleeps per case; while it runs, a
 //                   reader never sees a half-written case (every 'done' case has its results row

@@ -1,4 +1,4 @@
-#include "sweep/build.hpp"
+#include "sweep/build/build.hpp"
 
 #include <cstdio>
 #include <condition_variable>
@@ -15,11 +15,11 @@
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
 #include "store/database.hpp"
-#include "sweep/build_lock.hpp"
-#include "sweep/build_mpi.hpp"
-#include "sweep/build_work.hpp"
-#include "sweep/numerics.hpp"
-#include "sweep/progress.hpp"
+#include "sweep/build/build_lock.hpp"
+#include "sweep/build/build_mpi.hpp"
+#include "sweep/build/build_work.hpp"
+#include "sweep/build/numerics.hpp"
+#include "sweep/build/progress.hpp"
 
 namespace towdb::sweep {
 

@@ -1,4 +1,4 @@
-#include "sweep/distributed.hpp"
+#include "sweep/build/distributed.hpp"
 
 #include <cstdlib>
 #include <string>

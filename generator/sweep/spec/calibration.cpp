@@ -1,4 +1,4 @@
-#include "sweep/calibration.hpp"
+#include "sweep/spec/calibration.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "common/error.hpp"
 #include "io/csv.hpp"
-#include "sweep/keys.hpp"
+#include "sweep/spec/keys.hpp"
 
 namespace towdb::sweep {
 

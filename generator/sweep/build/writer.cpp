@@ -1,4 +1,4 @@
-#include "sweep/writer.hpp"
+#include "sweep/build/writer.hpp"
 
 #include <ctime>
 #include <map>

@@ -1,4 +1,4 @@
-#include "sweep/grid_tension.hpp"
+#include "sweep/spec/grid_tension.hpp"
 
 #include <cmath>
 

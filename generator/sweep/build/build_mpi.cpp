@@ -1,12 +1,12 @@
-#include "sweep/build_mpi.hpp"
+#include "sweep/build/build_mpi.hpp"
 
 #include <cstdint>
 #include <exception>
 #include <string>
 
-#include "sweep/distributed.hpp"
-#include "sweep/numerics.hpp"
-#include "sweep/serialize.hpp"
+#include "sweep/build/distributed.hpp"
+#include "sweep/build/numerics.hpp"
+#include "sweep/build/serialize.hpp"
 
 namespace towdb::sweep {
 

@@ -1,4 +1,4 @@
-#include "sweep/serialize.hpp"
+#include "sweep/build/serialize.hpp"
 
 #include <cstring>
 

@@ -1,4 +1,4 @@
-#include "sweep/case.hpp"
+#include "sweep/spec/case.hpp"
 
 #include <cmath>
 #include <mutex>

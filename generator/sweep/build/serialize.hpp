@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "sweep/case.hpp"
+#include "sweep/spec/case.hpp"
 
 namespace towdb::sweep {
 

@@ -14,8 +14,8 @@
 
 #include "sea/spectrum.hpp"
 #include "simulation/case_runner.hpp"
-#include "sweep/case.hpp"
-#include "sweep/sweep_file.hpp"
+#include "sweep/spec/case.hpp"
+#include "sweep/spec/sweep_file.hpp"
 
 namespace towdb::sweep {
 

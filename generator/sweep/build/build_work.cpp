@@ -1,4 +1,4 @@
-#include "sweep/build_work.hpp"
+#include "sweep/build/build_work.hpp"
 
 #include <chrono>
 #include <exception>

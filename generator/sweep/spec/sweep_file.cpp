@@ -1,4 +1,4 @@
-#include "sweep/sweep_file.hpp"
+#include "sweep/spec/sweep_file.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include "common/error.hpp"
 #include "common/units.hpp"
 #include "io/strict_toml.hpp"
-#include "sweep/keys.hpp"
+#include "sweep/spec/keys.hpp"
 
 namespace towdb::sweep {
 

@@ -1,4 +1,4 @@
-#include "sweep/numerics.hpp"
+#include "sweep/build/numerics.hpp"
 
 #include <cmath>
 #include <complex>
@@ -53,7 +53,7 @@ std::string numerics_mismatch(int rank, const std::string& rank_fingerprint, con
   if (rank_fingerprint == rank0_fingerprint) return {};
   return "MPI rank " + std::to_string(rank) + ": numerics fingerprint " + rank_fingerprint + " differs from rank 0's " +
          rank0_fingerprint +
-         " (another FFT plan or math library: sweep/numerics.hpp); its results would differ in the last bits, "
+         " (another FFT plan or math library: sweep/build/numerics.hpp); its results would differ in the last bits, "
          "so it computes nothing: run every rank on one machine kind";
 }
 

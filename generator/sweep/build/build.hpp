@@ -23,11 +23,11 @@
 
 #include "common/version.hpp"
 #include "io/ship_file.hpp"
-#include "sweep/case.hpp"
-#include "sweep/distributed.hpp"
-#include "sweep/keys.hpp"
-#include "sweep/sweep_file.hpp"
-#include "sweep/writer.hpp"
+#include "sweep/spec/case.hpp"
+#include "sweep/build/distributed.hpp"
+#include "sweep/spec/keys.hpp"
+#include "sweep/spec/sweep_file.hpp"
+#include "sweep/build/writer.hpp"
 
 namespace towdb::sweep {
 

@@ -1,4 +1,4 @@
-#include "sweep/status.hpp"
+#include "sweep/build/status.hpp"
 
 #include "store/database.hpp"
 

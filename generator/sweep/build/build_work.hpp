@@ -1,6 +1,6 @@
 // What a build's workers hand to its one writer: the event of one case
 // starting or finishing, and the worker's side of computing one case. Shared
-// by the threaded build (sweep/build.cpp) and the MPI one (sweep/build_mpi.hpp).
+// by the threaded build (sweep/build/build.cpp) and the MPI one (sweep/build/build_mpi.hpp).
 #ifndef TOWDB_SWEEP_BUILD_WORK_HPP
 #define TOWDB_SWEEP_BUILD_WORK_HPP
 
@@ -8,8 +8,8 @@
 #include <string>
 
 #include "io/ship_file.hpp"
-#include "sweep/build.hpp"
-#include "sweep/case.hpp"
+#include "sweep/build/build.hpp"
+#include "sweep/spec/case.hpp"
 
 namespace towdb::sweep {
 

@@ -1,4 +1,4 @@
-#include "sweep/simulation_runner.hpp"
+#include "sweep/build/simulation_runner.hpp"
 
 #include <cmath>
 #include <optional>

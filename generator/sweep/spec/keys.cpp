@@ -1,4 +1,4 @@
-#include "sweep/keys.hpp"
+#include "sweep/spec/keys.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -14,9 +14,9 @@
 
 #include "io/ship_file.hpp"
 #include "store/database.hpp"
-#include "sweep/case.hpp"
-#include "sweep/keys.hpp"
-#include "sweep/sweep_file.hpp"
+#include "sweep/spec/case.hpp"
+#include "sweep/spec/keys.hpp"
+#include "sweep/spec/sweep_file.hpp"
 
 namespace towdb::sweep {
 

@@ -1,4 +1,4 @@
-// The MPI protocol of a distributed build (sweep/distributed.hpp carries the
+// The MPI protocol of a distributed build (sweep/build/distributed.hpp carries the
 // bytes): rank 0 coordinates and is the only writer; ranks 1..N-1 send
 // kReady, then receive one case at a time (kWork: work index, inputs hash,
 // code version, rank 0's numerics fingerprint, the case), compute it and send
@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "io/ship_file.hpp"
-#include "sweep/build.hpp"
-#include "sweep/build_work.hpp"
-#include "sweep/case.hpp"
-#include "sweep/keys.hpp"
+#include "sweep/build/build.hpp"
+#include "sweep/build/build_work.hpp"
+#include "sweep/spec/case.hpp"
+#include "sweep/spec/keys.hpp"
 
 namespace towdb::sweep {
 

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "io/ship_file.hpp"
-#include "sweep/case.hpp"
-#include "sweep/grid_tension.hpp"
+#include "sweep/spec/case.hpp"
+#include "sweep/spec/grid_tension.hpp"
 
 namespace towdb::sweep {
 

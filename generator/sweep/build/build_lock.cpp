@@ -1,4 +1,4 @@
-#include "sweep/build_lock.hpp"
+#include "sweep/build/build_lock.hpp"
 
 #include <cstdio>
 

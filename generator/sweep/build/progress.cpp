@@ -1,4 +1,4 @@
-#include "sweep/progress.hpp"
+#include "sweep/build/progress.hpp"
 
 #include <cmath>
 #include <cstdio>

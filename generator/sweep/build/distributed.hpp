@@ -3,7 +3,7 @@
 // -DTOWDB_MPI=ON; without it the same interface reports one process (rank 0
 // of 1) and the message functions are never called.
 //
-// The builder's protocol on top of it (sweep/build_mpi.hpp): rank 0 coordinates
+// The builder's protocol on top of it (sweep/build/build_mpi.hpp): rank 0 coordinates
 // and is the only writer; ranks 1..N-1 ask for work (dynamic scheduling),
 // compute one case at a time and send the outcome back.
 #ifndef TOWDB_SWEEP_DISTRIBUTED_HPP

@@ -6,7 +6,7 @@
 // exactly as they are written to the database's `cases` columns, so that a
 // query such as `speed_kt = 5` matches bit-for-bit; the *_si() helpers give
 // the SI values the physics needs. CaseOutcome is SI (N, m, s, rad); the
-// database writer (sweep/writer.hpp) converts it to the schema's lbf, ft,
+// database writer (sweep/build/writer.hpp) converts it to the schema's lbf, ft,
 // kips and deg.
 //
 // Sign and axis conventions: heading_deg is the wave heading relative to the

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "io/ship_file.hpp"
-#include "sweep/case.hpp"
+#include "sweep/spec/case.hpp"
 
 namespace towdb::sweep {
 
