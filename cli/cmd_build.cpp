@@ -209,6 +209,10 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
   if (s.lowest_points_filled > 0) {
     std::cout << "; the catenary's lowest point added to " << s.lowest_points_filled << " towline fits";
   }
+  if (s.slack_snatch_dropped > 0) {
+    std::cout << "; the per-day slack and snatch records of " << s.slack_snatch_dropped
+              << " cases dropped (day_records = \"maxima\")";
+  }
   std::cout << (s.interrupted ? "; interrupted (run again with the same command to continue)" : "") << "\n";
   return (s.failed > 0 || s.interrupted) ? 1 : 0;
 }

@@ -68,17 +68,30 @@ std::vector<std::int64_t> unpack_uint32(std::string_view blob, std::size_t count
   return out;
 }
 
-void write_case_days(Database& db, std::int64_t case_id, const CaseDays& days) {
+namespace {
+
+// The row as schema `version` (4 to 6: no slack_snatch_stored column; 7 and later) holds it.
+void insert_case_days(Database& db, std::int64_t case_id, const CaseDays& days, int version) {
   const std::size_t n = days.max_dynamic_kips.size();
-  if (n == 0 || days.slack_time_s.size() != n || days.snatch_events.size() != n) {
+  const std::size_t per_day = days.slack_snatch_stored ? n : 0;
+  if (n == 0 || days.slack_time_s.size() != per_day || days.snatch_events.size() != per_day) {
     throw InputError("case " + std::to_string(case_id) + ": day arrays of " + std::to_string(n) + ", " +
                      std::to_string(days.slack_time_s.size()) + " and " + std::to_string(days.snatch_events.size()) +
-                     " values: must be the same, at least 1");
+                     " values: must be the same, at least 1" +
+                     (days.slack_snatch_stored ? "" : " (slack and snatch: none, as they are not stored)"));
+  }
+  const bool flagged = version >= 7;
+  if (!flagged && !days.slack_snatch_stored) {
+    throw InputError("case " + std::to_string(case_id) + ": schema version " + std::to_string(version) +
+                     " stores every day's slack and snatch (version 7 may leave them out)");
   }
   Statement st = db.prepare(
-      "INSERT OR REPLACE INTO case_days (case_id, days, max_dynamic_kips, slack_time_s, snatch_events) "
-      "VALUES (?, ?, ?, ?, ?)");
+      flagged ? "INSERT OR REPLACE INTO case_days (case_id, days, max_dynamic_kips, slack_time_s, snatch_events, "
+                "slack_snatch_stored) VALUES (?, ?, ?, ?, ?, ?)"
+              : "INSERT OR REPLACE INTO case_days (case_id, days, max_dynamic_kips, slack_time_s, snatch_events) "
+                "VALUES (?, ?, ?, ?, ?)");
   st.bind(1, case_id).bind(2, static_cast<std::int64_t>(n)).bind_blob(3, pack_float32(days.max_dynamic_kips));
+  if (flagged) st.bind(6, static_cast<std::int64_t>(days.slack_snatch_stored ? 1 : 0));
   if (all_zero(days.slack_time_s)) {
     st.bind_null(4);
   } else {
@@ -92,9 +105,16 @@ void write_case_days(Database& db, std::int64_t case_id, const CaseDays& days) {
   st.run();
 }
 
+}  // namespace
+
+void write_case_days(Database& db, std::int64_t case_id, const CaseDays& days) {
+  insert_case_days(db, case_id, days, db.schema_version());
+}
+
 CaseDays read_case_days(Database& db, std::int64_t case_id) {
-  Statement st =
-      db.prepare("SELECT days, max_dynamic_kips, slack_time_s, snatch_events FROM case_days WHERE case_id = ?");
+  Statement st = db.prepare(
+      "SELECT days, max_dynamic_kips, slack_time_s, snatch_events, slack_snatch_stored FROM case_days "
+      "WHERE case_id = ?");
   st.bind(1, case_id);
   if (!st.step()) throw InputError("case " + std::to_string(case_id) + ": no row in case_days");
   const std::int64_t days = st.column_int(0);
@@ -102,11 +122,26 @@ CaseDays read_case_days(Database& db, std::int64_t case_id) {
   const auto n = static_cast<std::size_t>(days);
   CaseDays out;
   out.max_dynamic_kips = unpack_float32(st.column_blob(1), n, "case_days.max_dynamic_kips");
+  out.slack_snatch_stored = st.column_int(4) != 0;
+  if (!out.slack_snatch_stored) return out;
   out.slack_time_s = st.is_null(2) ? std::vector<double>(n, 0.0)
                                    : unpack_float32(st.column_blob(2), n, "case_days.slack_time_s");
   out.snatch_events = st.is_null(3) ? std::vector<std::int64_t>(n, 0)
                                     : unpack_uint32(st.column_blob(3), n, "case_days.snatch_events");
   return out;
+}
+
+int drop_slack_snatch_days(Database& db) {
+  Statement count = db.prepare("SELECT count(*) FROM case_days WHERE slack_snatch_stored = 1");
+  count.step();
+  const auto n = static_cast<int>(count.column_int(0));
+  if (n > 0) {
+    db.prepare(
+          "UPDATE case_days SET slack_time_s = NULL, snatch_events = NULL, slack_snatch_stored = 0 "
+          "WHERE slack_snatch_stored = 1")
+        .run();
+  }
+  return n;
 }
 
 void pack_daily_maxima(Database& db) {
@@ -115,7 +150,7 @@ void pack_daily_maxima(Database& db) {
   std::int64_t current = -1;
   CaseDays days;
   const auto flush = [&] {
-    if (current >= 0) write_case_days(db, current, days);
+    if (current >= 0) insert_case_days(db, current, days, 4);  // migration 4's own row layout
     days = CaseDays{};
   };
   while (rows.step()) {

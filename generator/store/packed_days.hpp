@@ -24,16 +24,23 @@ std::vector<double> unpack_float32(std::string_view blob, std::size_t count, con
 std::vector<std::int64_t> unpack_uint32(std::string_view blob, std::size_t count, const std::string& field);
 
 // One case's days, as the writer stores them and readers get them back.
+// slack_snatch_stored = false (schema 7): the daily maxima only; the two
+// per-day vectors are then empty (the case's slack fraction and snatch rate
+// stay in results).
 struct CaseDays {
   std::vector<double> max_dynamic_kips;
   std::vector<double> slack_time_s;        // all zero when never slack
   std::vector<std::int64_t> snatch_events;  // all zero when none
+  bool slack_snatch_stored = true;
 };
 
 // Replaces case `case_id`'s row of case_days (inside the caller's transaction).
 void write_case_days(Database& db, std::int64_t case_id, const CaseDays& days);
 // Reads it back (InputError naming the column when a blob does not match `days`).
 CaseDays read_case_days(Database& db, std::int64_t case_id);
+// Drops the per-day slack time and snatch count of every case that still
+// holds them (slack_snatch_stored 1 -> 0); returns how many cases changed.
+int drop_slack_snatch_days(Database& db);
 
 // Migration 4's second step: packs every row of daily_maxima into case_days
 // and drops daily_maxima (inside the migration's transaction).

@@ -155,8 +155,9 @@ TEST_F(StoreTest, FailedTransactionLeavesNothing) {
 }
 
 // A database of schema version 3 (daily_maxima, one row per day), made from a
-// new one by undoing migrations 6, 5 and 4 as 001_initial.sql, 004_case_days.sql,
-// 005_coverage_notes.sql and 006_catenary_lowest_point.sql define them.
+// new one by undoing migrations 7, 6, 5 and 4 as 001_initial.sql, 004_case_days.sql,
+// 005_coverage_notes.sql, 006_catenary_lowest_point.sql and 007_day_records.sql
+// define them (dropping case_days undoes 7 and 4).
 void make_version_3(const std::filesystem::path& path) {
   { Database db = Database::open(path, Database::Mode::kCreate); }
   sqlite3* raw = nullptr;
@@ -220,6 +221,38 @@ TEST_F(StoreTest, PackedDaysAreLittleEndianBinary32AndCheckedOnRead) {
   // The table's CHECK refuses an array that does not hold `days` values.
   EXPECT_THROW(db.exec("INSERT INTO case_days (case_id, days, max_dynamic_kips) VALUES (1, 2, x'0000803f')"),
                std::exception);
+}
+
+TEST_F(StoreTest, MaximaOnlyDaysKeepTheMaximaAndSayTheRestWasNotStored) {
+  // EVIDENCE-OF: schema/007_day_records.sql (slack_snatch_stored = 0: both per-day columns NULL)
+  Database db = Database::open(dir_ / "m.db", Database::Mode::kCreate);
+  db.exec("INSERT INTO cases (case_id, case_key, inputs_sha256, tug_name, tow_name, speed_kt, spectrum, heading_deg,"
+          " line_type, length_ft, mean_tension_lbf, days, seed) VALUES (1, 'k1', 'h', 'A', 'B', 5,"
+          " 'pierson-moskowitz', 0, 'fiber', 800, 1000, 2, 1), (2, 'k2', 'h', 'A', 'B', 5, 'pierson-moskowitz', 30,"
+          " 'fiber', 800, 1000, 2, 1), (3, 'k3', 'h', 'A', 'B', 5, 'pierson-moskowitz', 60, 'fiber', 800, 1000, 2, 1)");
+  CaseDays maxima_only{{1.5, 2.5}, {}, {}, false};
+  write_case_days(db, 1, maxima_only);
+  write_case_days(db, 2, CaseDays{{3.5, 4.5}, {10.0, 0.0}, {2, 0}});
+  write_case_days(db, 3, CaseDays{{5.5, 6.5}, {0.0, 0.0}, {0, 0}});
+  const CaseDays a = read_case_days(db, 1);
+  EXPECT_FALSE(a.slack_snatch_stored);
+  EXPECT_EQ(a.max_dynamic_kips, (std::vector<double>{1.5, 2.5}));
+  EXPECT_TRUE(a.slack_time_s.empty());
+  EXPECT_TRUE(a.snatch_events.empty());
+  EXPECT_TRUE(read_case_days(db, 3).slack_snatch_stored);  // stored, all zero: not the same as "not stored"
+  // Per-day values given although the row says they are not stored: refused.
+  expect_input_error([&] { write_case_days(db, 1, CaseDays{{1.5, 2.5}, {0.0, 0.0}, {0, 0}, false}); },
+                     "not stored");
+  // The table refuses a row that says "not stored" and holds them anyway.
+  EXPECT_THROW(db.exec("UPDATE case_days SET slack_snatch_stored = 0 WHERE case_id = 2"), std::exception);
+
+  // Dropping keeps every maximum, counts the rows it changed, and is idempotent.
+  EXPECT_EQ(drop_slack_snatch_days(db), 2);
+  EXPECT_EQ(drop_slack_snatch_days(db), 0);
+  const CaseDays b = read_case_days(db, 2);
+  EXPECT_FALSE(b.slack_snatch_stored);
+  EXPECT_EQ(b.max_dynamic_kips, (std::vector<double>{3.5, 4.5}));
+  EXPECT_TRUE(b.slack_time_s.empty());
 }
 
 }  // namespace

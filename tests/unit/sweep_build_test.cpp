@@ -27,6 +27,9 @@
 //   sweep-build-14 schema 6: each fit stores the runner's lowest point (ft); fits stored without
 //                  it are filled by the next build from an up-to-date case, once; fits of
 //                  cases outside the sweep stay NULL
+//   sweep-build-15 schema 7, day_records = "maxima": a build drops the stored cases' per-day slack
+//                  and snatch and writes new cases without them; every other stored value is the
+//                  same as with "all"
 #include <sqlite3.h>
 #include <sys/file.h>
 #include <fcntl.h>
@@ -493,6 +496,45 @@ TEST(SweepBuild, LowestPointIsStoredAndFilledForOlderFits) {  // sweep-build-14
   const sweep::BuildSummary s1 = sweep::run_build(db, f.file, {f.cases.front()}, f.catalog, make_test_runner(), o);
   EXPECT_EQ(s1.lowest_points_filled, 1);
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM towline_fits WHERE lowest_elevation_ft IS NULL"), fits - 1);
+}
+
+TEST(SweepBuild, MaximaOnlyDayRecordsKeepEverythingButThePerDaySlackAndSnatch) {  // sweep-build-15
+  Fixture f;
+  const fs::path db = f.dir / "maxima.db";
+  const fs::path reference = f.dir / "all.db";
+  f.build(db, 1, make_test_runner());
+  {
+    // The test runner's line never goes slack: give three cases per-day slack and snatch records.
+    store::Database d = store::Database::open(db, store::Database::Mode::kReadWrite);
+    d.exec("UPDATE case_days SET slack_time_s = max_dynamic_kips, snatch_events = max_dynamic_kips WHERE case_id <= 3");
+  }
+  std::set<std::string> not_compared = provenance_columns();
+  for (const char* c : {"case_days.slack_time_s", "case_days.snatch_events", "case_days.slack_snatch_stored"}) {
+    not_compared.insert(c);
+  }
+  const std::string before = dump_database(db, not_compared);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM case_days WHERE slack_snatch_stored = 1"), kSmallSweepCases);
+
+  f.file.day_records = sweep::DayRecords::kMaxima;
+  const sweep::BuildSummary s = f.build(db, 1, make_test_runner());
+  EXPECT_EQ(s.scheduled, 0);
+  EXPECT_EQ(s.slack_snatch_dropped, kSmallSweepCases);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM case_days WHERE slack_snatch_stored = 0 AND slack_time_s IS NULL "
+                          "AND snatch_events IS NULL"),
+            kSmallSweepCases);
+  EXPECT_EQ(dump_database(db, not_compared), before);  // every maximum, fit and result kept
+  EXPECT_EQ(f.build(db, 1, make_test_runner()).slack_snatch_dropped, 0);
+
+  // Cases computed under "maxima" store no per-day slack and snatch, and the same everything else.
+  sweep::BuildOptions v2;
+  v2.code_version = "99.0.0-test";
+  EXPECT_EQ(f.build(db, 2, make_test_runner(), v2).done, kSmallSweepCases);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM case_days WHERE slack_snatch_stored = 0"), kSmallSweepCases);
+  f.file.day_records = sweep::DayRecords::kAll;
+  f.build(reference, 1, make_test_runner());  // the same two builds (the first version's fits stay)
+  f.build(reference, 2, make_test_runner(), v2);
+  EXPECT_EQ(query_int(reference, "SELECT count(*) FROM case_days WHERE slack_snatch_stored = 1"), kSmallSweepCases);
+  EXPECT_EQ(dump_database(db, not_compared), dump_database(reference, not_compared));
 }
 
 }  // namespace

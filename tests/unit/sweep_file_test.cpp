@@ -5,7 +5,7 @@
 //                 2 x 5 x 2 x 3 x 4 x 4 x 3 = 2880 cases minus 12 per skipped condition; labels,
 //                 speeds (8.5 kt for AE 26), CG-47 factors 1.0 / 0.6
 //   sweep-file-2  the committed calibration sweep reproduces every CSV row (tensions, days)
-//   sweep-file-3  bad entries: file:line, key and what is allowed
+//   sweep-file-3  bad entries: file:line, key and what is allowed; day_records "all" by default
 //   sweep-file-4  seeds: common random numbers across towlines and tensions (EQ-SWEEP-4);
 //                 keys change exactly with their inputs (EQ-SWEEP-5/6)
 //   sweep-file-5  serialisation round trip is bit-exact
@@ -162,9 +162,18 @@ TEST(SweepFile, BadEntriesAreNamedWithFileAndLine) {  // sweep-file-3
                "grid[1].mean_tensions[1].basis: \"guessed\" is not allowed");
   expect_error(replace(ok, "winds_kt = [20.0]", "seas = [ { spectrum = \"bretschneider\", hs_ft = 8.0, tp_s = 8.0 } ]"),
                "a \"calculated\" mean tension needs a wind");
+  expect_error(replace(ok, "format = \"towdb-sweep-1\"", "format = \"towdb-sweep-1\"\nday_records = \"some\""),
+               "day_records: \"some\" is not allowed; expected one of \"all\", \"maxima\"");
   expect_error("format = \"towdb-sweep-1\"\ndescription = \"x\"\n", "the sweep has no [[grid]] and no [[case]]");
   expect_error("format = \"towdb-sweep-1\"\ndescription = \"x\"\n[[case]\n", "bad.toml:3:");
   EXPECT_THROW(sweep::load_sweep("/nonexistent/sweep.toml"), InputError);
+  // day_records (schema 7): "all" unless the file says "maxima".
+  EXPECT_EQ(sweep::parse_sweep(ok, "ok.toml").day_records, sweep::DayRecords::kAll);
+  EXPECT_EQ(sweep::parse_sweep(replace(ok, "format = \"towdb-sweep-1\"",
+                                       "format = \"towdb-sweep-1\"\nday_records = \"maxima\""),
+                               "ok.toml")
+                .day_records,
+            sweep::DayRecords::kMaxima);
 }
 
 TEST(SweepFile, SeedsAndKeys) {  // sweep-file-4

@@ -368,6 +368,8 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
     registered = writer->register_cases(cases, keys, catalog, summary.build_id, options.retry_failed);
     summary.lowest_points_filled =
         fill_lowest_points(*writer, cases, keys, registered, catalog, options.lowest_elevation_m);
+    writer->set_day_records(sweep.day_records);
+    if (sweep.day_records == DayRecords::kMaxima) summary.slack_snatch_dropped = writer->drop_slack_snatch_days();
     summary.total = static_cast<int>(cases.size());
     for (std::size_t i = 0; i < cases.size(); ++i) {
       const CaseState state = registered[i].state;

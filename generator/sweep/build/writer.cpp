@@ -403,8 +403,10 @@ void DatabaseWriter::write_result(std::int64_t case_id, const CaseSpec& spec, co
     // Every day, packed into one row (schema/004_case_days.sql).
     {
       store::CaseDays days;
+      days.slack_snatch_stored = day_records_ == DayRecords::kAll;
       for (const DayOutcome& day : outcome.days) {
         days.max_dynamic_kips.push_back(n_to_kips(day.max_dynamic_n));
+        if (!days.slack_snatch_stored) continue;
         days.slack_time_s.push_back(day.slack_time_s);
         days.snatch_events.push_back(day.snatch_events);
       }
@@ -416,6 +418,12 @@ void DatabaseWriter::write_result(std::int64_t case_id, const CaseSpec& spec, co
     done.bind(1, keys.fit_id).bind(2, build_id).bind(3, utc_now()).bind(4, case_id);
     done.run();
   });
+}
+
+int DatabaseWriter::drop_slack_snatch_days() {
+  int dropped = 0;
+  db_.transaction([&] { dropped = store::drop_slack_snatch_days(db_); });
+  return dropped;
 }
 
 void DatabaseWriter::write_failure(std::int64_t case_id, const std::string& message, std::int64_t build_id) {

@@ -82,6 +82,12 @@ class DatabaseWriter {
                                              const io::ShipCatalog& catalog, std::int64_t build_id,
                                              bool retry_failed);
 
+  // What write_result keeps of each day (the sweep file's day_records).
+  void set_day_records(DayRecords records) { day_records_ = records; }
+  // day_records = "maxima": drops the per-day slack time and snatch count of
+  // the cases already stored (one transaction); returns how many changed.
+  int drop_slack_snatch_days();
+
   void mark_running(std::int64_t case_id, std::int64_t build_id);
   // The fit, the results row, every day and status 'done', in one transaction.
   void write_result(std::int64_t case_id, const CaseSpec& spec, const CaseKeys& keys, const CaseOutcome& outcome,
@@ -99,6 +105,7 @@ class DatabaseWriter {
   std::int64_t register_vessel(const io::VesselFile& vf);
   void register_component(const model::TowlineComponent& c);
   store::Database& db_;
+  DayRecords day_records_ = DayRecords::kAll;
 };
 
 }  // namespace towdb::sweep

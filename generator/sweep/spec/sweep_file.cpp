@@ -347,10 +347,13 @@ SweepFile parse_sweep(std::string_view text, const std::string& path) {
   SweepFile out;
   out.path = path;
   out.sha256 = io::sha256_hex(text);
-  check_keys(doc, path, "", {"format", "description", "defaults", "grid", "case"});
+  check_keys(doc, path, "", {"format", "description", "day_records", "defaults", "grid", "case"});
   io::StrictTable top(doc, path, "");
   top.string("format", {kFormat});
   out.description = top.string("description");
+  if (top.has("day_records")) {
+    out.day_records = top.string("day_records", {"all", "maxima"}) == "maxima" ? DayRecords::kMaxima : DayRecords::kAll;
+  }
   Settings defaults;
   if (doc.contains("defaults")) {
     io::StrictTable d = top.table("defaults");

@@ -68,10 +68,17 @@ struct CaseEntry {
   std::int64_t base_seed = 0;
 };
 
+// What each case of the sweep keeps of its simulated days (top-level key
+// day_records): "all" = the daily maximum, slack time and snatch count;
+// "maxima" = the daily maximum only (schema 7; the case's slack fraction and
+// snatch rate stay in results), for a database kept to a size budget.
+enum class DayRecords { kAll, kMaxima };
+
 struct SweepFile {
   std::string path;
   std::string sha256;  // of the file's bytes
   std::string description;
+  DayRecords day_records = DayRecords::kAll;
   std::vector<GridEntry> grids;
   std::vector<CaseEntry> cases;
 };
