@@ -70,8 +70,9 @@ std::vector<std::int64_t> unpack_uint32(std::string_view blob, std::size_t count
 
 namespace {
 
-// The row as schema `version` (4 to 6: no slack_snatch_stored column; 7 and later) holds it.
-void insert_case_days(Database& db, std::int64_t case_id, const CaseDays& days, int version) {
+// The row in the current layout, or (`with_stored_flag` false) in the layout of
+// schema versions 4 to 6, which have no slack_snatch_stored column (migration 4).
+void insert_case_days(Database& db, std::int64_t case_id, const CaseDays& days, bool with_stored_flag) {
   const std::size_t n = days.max_dynamic_kips.size();
   const std::size_t per_day = days.slack_snatch_stored ? n : 0;
   if (n == 0 || days.slack_time_s.size() != per_day || days.snatch_events.size() != per_day) {
@@ -80,18 +81,18 @@ void insert_case_days(Database& db, std::int64_t case_id, const CaseDays& days, 
                      " values: must be the same, at least 1" +
                      (days.slack_snatch_stored ? "" : " (slack and snatch: none, as they are not stored)"));
   }
-  const bool flagged = version >= 7;
-  if (!flagged && !days.slack_snatch_stored) {
-    throw InputError("case " + std::to_string(case_id) + ": schema version " + std::to_string(version) +
-                     " stores every day's slack and snatch (version 7 may leave them out)");
+  if (!with_stored_flag && !days.slack_snatch_stored) {
+    throw InputError("case " + std::to_string(case_id) +
+                     ": schema versions 4 to 6 store every day's slack and snatch (version 7 may leave them out)");
   }
   Statement st = db.prepare(
-      flagged ? "INSERT OR REPLACE INTO case_days (case_id, days, max_dynamic_kips, slack_time_s, snatch_events, "
-                "slack_snatch_stored) VALUES (?, ?, ?, ?, ?, ?)"
-              : "INSERT OR REPLACE INTO case_days (case_id, days, max_dynamic_kips, slack_time_s, snatch_events) "
-                "VALUES (?, ?, ?, ?, ?)");
+      with_stored_flag
+          ? "INSERT OR REPLACE INTO case_days (case_id, days, max_dynamic_kips, slack_time_s, snatch_events, "
+            "slack_snatch_stored) VALUES (?, ?, ?, ?, ?, ?)"
+          : "INSERT OR REPLACE INTO case_days (case_id, days, max_dynamic_kips, slack_time_s, snatch_events) "
+            "VALUES (?, ?, ?, ?, ?)");
   st.bind(1, case_id).bind(2, static_cast<std::int64_t>(n)).bind_blob(3, pack_float32(days.max_dynamic_kips));
-  if (flagged) st.bind(6, static_cast<std::int64_t>(days.slack_snatch_stored ? 1 : 0));
+  if (with_stored_flag) st.bind(6, static_cast<std::int64_t>(days.slack_snatch_stored ? 1 : 0));
   if (all_zero(days.slack_time_s)) {
     st.bind_null(4);
   } else {
@@ -108,7 +109,7 @@ void insert_case_days(Database& db, std::int64_t case_id, const CaseDays& days, 
 }  // namespace
 
 void write_case_days(Database& db, std::int64_t case_id, const CaseDays& days) {
-  insert_case_days(db, case_id, days, db.schema_version());
+  insert_case_days(db, case_id, days, true);  // writers open the file migrated to the latest version
 }
 
 CaseDays read_case_days(Database& db, std::int64_t case_id) {
@@ -150,7 +151,7 @@ void pack_daily_maxima(Database& db) {
   std::int64_t current = -1;
   CaseDays days;
   const auto flush = [&] {
-    if (current >= 0) insert_case_days(db, current, days, 4);  // migration 4's own row layout
+    if (current >= 0) insert_case_days(db, current, days, false);  // migration 4's own row layout
     days = CaseDays{};
   };
   while (rows.step()) {
