@@ -213,6 +213,9 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
     std::cout << "; the per-day slack and snatch records of " << s.slack_snatch_dropped
               << " cases dropped (day_records = \"maxima\")";
   }
+  if (s.maxima_repacked > 0) {
+    std::cout << "; the daily maxima of " << s.maxima_repacked << " cases repacked as binary16 (maxima_precision)";
+  }
   std::cout << (s.interrupted ? "; interrupted (run again with the same command to continue)" : "") << "\n";
   return (s.failed > 0 || s.interrupted) ? 1 : 0;
 }

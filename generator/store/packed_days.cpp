@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <limits>
+
+#include <Eigen/Core>
 
 #include "common/error.hpp"
 
@@ -21,12 +24,15 @@ std::uint32_t get_u32(std::string_view blob, std::size_t i) {
   return v;
 }
 
-void check_length(std::string_view blob, std::size_t count, const std::string& field) {
-  if (blob.size() != 4 * count) {
-    throw InputError(field + ": " + std::to_string(blob.size()) + " bytes, expected 4 x " + std::to_string(count) +
-                     " days (the database is damaged)");
+void check_length(std::string_view blob, std::size_t count, const std::string& field, std::size_t bytes = 4) {
+  if (blob.size() != bytes * count) {
+    throw InputError(field + ": " + std::to_string(blob.size()) + " bytes, expected " + std::to_string(bytes) +
+                     " x " + std::to_string(count) + " days (the database is damaged)");
   }
 }
+
+// The largest finite binary16 value.
+constexpr double kFloat16Max = 65504.0;
 
 template <typename T>
 bool all_zero(const std::vector<T>& v) {
@@ -68,6 +74,31 @@ std::vector<std::int64_t> unpack_uint32(std::string_view blob, std::size_t count
   return out;
 }
 
+bool pack_float16(const std::vector<double>& values, std::string* out) {
+  std::string packed;
+  packed.reserve(2 * values.size());
+  for (double x : values) {
+    const auto f = static_cast<float>(x);
+    if (!std::isfinite(f) || std::fabs(f) > kFloat16Max) return false;
+    const auto bits = Eigen::numext::bit_cast<std::uint16_t>(Eigen::half(f));
+    packed.push_back(static_cast<char>(bits & 0xFFu));
+    packed.push_back(static_cast<char>(bits >> 8));
+  }
+  *out = std::move(packed);
+  return true;
+}
+
+std::vector<double> unpack_float16(std::string_view blob, std::size_t count, const std::string& field) {
+  check_length(blob, count, field, 2);
+  std::vector<double> out(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto bits = static_cast<std::uint16_t>(static_cast<unsigned char>(blob[2 * i]) |
+                                                 (static_cast<unsigned char>(blob[2 * i + 1]) << 8));
+    out[i] = static_cast<float>(Eigen::numext::bit_cast<Eigen::half>(bits));
+  }
+  return out;
+}
+
 namespace {
 
 // The row in the current layout, or (`with_stored_flag` false) in the layout of
@@ -85,14 +116,27 @@ void insert_case_days(Database& db, std::int64_t case_id, const CaseDays& days, 
     throw InputError("case " + std::to_string(case_id) +
                      ": schema versions 4 to 6 store every day's slack and snatch (version 7 may leave them out)");
   }
+  if (days.maxima_bytes != 4 && days.maxima_bytes != 2) {
+    throw InputError("case " + std::to_string(case_id) + ": maxima_bytes = " + std::to_string(days.maxima_bytes) +
+                     ": must be 4 (binary32) or 2 (binary16)");
+  }
+  if (!with_stored_flag && days.maxima_bytes != 4) {
+    throw InputError("case " + std::to_string(case_id) + ": schema versions 4 to 6 store binary32 maxima only");
+  }
+  std::string maxima;
+  const bool half = days.maxima_bytes == 2 && pack_float16(days.max_dynamic_kips, &maxima);
+  if (!half) maxima = pack_float32(days.max_dynamic_kips);
   Statement st = db.prepare(
       with_stored_flag
           ? "INSERT OR REPLACE INTO case_days (case_id, days, max_dynamic_kips, slack_time_s, snatch_events, "
-            "slack_snatch_stored) VALUES (?, ?, ?, ?, ?, ?)"
+            "slack_snatch_stored, maxima_bytes) VALUES (?, ?, ?, ?, ?, ?, ?)"
           : "INSERT OR REPLACE INTO case_days (case_id, days, max_dynamic_kips, slack_time_s, snatch_events) "
             "VALUES (?, ?, ?, ?, ?)");
-  st.bind(1, case_id).bind(2, static_cast<std::int64_t>(n)).bind_blob(3, pack_float32(days.max_dynamic_kips));
-  if (with_stored_flag) st.bind(6, static_cast<std::int64_t>(days.slack_snatch_stored ? 1 : 0));
+  st.bind(1, case_id).bind(2, static_cast<std::int64_t>(n)).bind_blob(3, maxima);
+  if (with_stored_flag) {
+    st.bind(6, static_cast<std::int64_t>(days.slack_snatch_stored ? 1 : 0));
+    st.bind(7, static_cast<std::int64_t>(half ? 2 : 4));
+  }
   if (all_zero(days.slack_time_s)) {
     st.bind_null(4);
   } else {
@@ -114,7 +158,7 @@ void write_case_days(Database& db, std::int64_t case_id, const CaseDays& days) {
 
 CaseDays read_case_days(Database& db, std::int64_t case_id) {
   Statement st = db.prepare(
-      "SELECT days, max_dynamic_kips, slack_time_s, snatch_events, slack_snatch_stored FROM case_days "
+      "SELECT days, max_dynamic_kips, slack_time_s, snatch_events, slack_snatch_stored, maxima_bytes FROM case_days "
       "WHERE case_id = ?");
   st.bind(1, case_id);
   if (!st.step()) throw InputError("case " + std::to_string(case_id) + ": no row in case_days");
@@ -122,7 +166,9 @@ CaseDays read_case_days(Database& db, std::int64_t case_id) {
   if (days < 1) throw InputError("case_days.days = " + std::to_string(days) + ": must be >= 1");
   const auto n = static_cast<std::size_t>(days);
   CaseDays out;
-  out.max_dynamic_kips = unpack_float32(st.column_blob(1), n, "case_days.max_dynamic_kips");
+  out.maxima_bytes = static_cast<int>(st.column_int(5));
+  out.max_dynamic_kips = out.maxima_bytes == 2 ? unpack_float16(st.column_blob(1), n, "case_days.max_dynamic_kips")
+                                               : unpack_float32(st.column_blob(1), n, "case_days.max_dynamic_kips");
   out.slack_snatch_stored = st.column_int(4) != 0;
   if (!out.slack_snatch_stored) return out;
   out.slack_time_s = st.is_null(2) ? std::vector<double>(n, 0.0)
@@ -143,6 +189,30 @@ int drop_slack_snatch_days(Database& db) {
         .run();
   }
   return n;
+}
+
+int pack_maxima_binary16(Database& db) {
+  // The ids first: a table is not updated while a statement scans it.
+  std::vector<std::int64_t> ids;
+  Statement list = db.prepare("SELECT case_id FROM case_days WHERE maxima_bytes = 4 ORDER BY case_id");
+  while (list.step()) ids.push_back(list.column_int(0));
+  Statement read = db.prepare("SELECT days, max_dynamic_kips FROM case_days WHERE case_id = ?");
+  Statement update = db.prepare("UPDATE case_days SET max_dynamic_kips = ?, maxima_bytes = 2 WHERE case_id = ?");
+  int changed = 0;
+  for (const std::int64_t case_id : ids) {
+    read.reset();
+    read.bind(1, case_id);
+    read.step();
+    const auto n = static_cast<std::size_t>(read.column_int(0));
+    const std::vector<double> maxima = unpack_float32(read.column_blob(1), n, "case_days.max_dynamic_kips");
+    std::string half;
+    if (!pack_float16(maxima, &half)) continue;  // a value binary16 cannot hold: the case keeps binary32
+    update.reset();
+    update.bind_blob(1, half).bind(2, case_id);
+    update.run();
+    ++changed;
+  }
+  return changed;
 }
 
 void pack_daily_maxima(Database& db) {

@@ -3,6 +3,7 @@
 // bit-exact round trip of doubles through REAL columns (after SQLite
 // test/atof1.test), and migration 4's packing of daily_maxima into case_days.
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -156,8 +157,8 @@ TEST_F(StoreTest, FailedTransactionLeavesNothing) {
 
 // A database of schema version 3 (daily_maxima, one row per day), made from a
 // new one by undoing migrations 7, 6, 5 and 4 as 001_initial.sql, 004_case_days.sql,
-// 005_coverage_notes.sql, 006_catenary_lowest_point.sql and 007_day_records.sql
-// define them (dropping case_days undoes 7 and 4).
+// 005_coverage_notes.sql, 006_catenary_lowest_point.sql, 007_day_records.sql and
+// 008_maxima_binary16.sql define them (dropping case_days undoes 8, 7 and 4).
 void make_version_3(const std::filesystem::path& path) {
   { Database db = Database::open(path, Database::Mode::kCreate); }
   sqlite3* raw = nullptr;
@@ -196,6 +197,7 @@ TEST_F(StoreTest, MigrationFourPacksEveryDayIntoOneRowPerCase) {
   EXPECT_EQ(a.max_dynamic_kips, (std::vector<double>{101.25, 173.875, 99.0}));
   EXPECT_EQ(a.slack_time_s, (std::vector<double>{0.0, 12.5, 0.0}));
   EXPECT_EQ(a.snatch_events, (std::vector<std::int64_t>{0, 3, 0}));
+  EXPECT_EQ(a.maxima_bytes, 4);  // migration 8 keeps every stored row binary32
   const CaseDays b = read_case_days(db, 9);
   EXPECT_EQ(b.max_dynamic_kips, (std::vector<double>{20.5, 21.0}));
   EXPECT_EQ(b.slack_time_s, (std::vector<double>{0.0, 0.0}));
@@ -253,6 +255,55 @@ TEST_F(StoreTest, MaximaOnlyDaysKeepTheMaximaAndSayTheRestWasNotStored) {
   EXPECT_FALSE(b.slack_snatch_stored);
   EXPECT_EQ(b.max_dynamic_kips, (std::vector<double>{3.5, 4.5}));
   EXPECT_TRUE(b.slack_time_s.empty());
+}
+
+TEST_F(StoreTest, Binary16MaximaAreTheNearestHalfAndRepackedOnlyWhereTheyFit) {
+  // EVIDENCE-OF: schema/008_maxima_binary16.sql. IEEE 754-2008 binary16: 1.0 is 0x3C00 (stored
+  // low byte first); 11 significant bits, so in [512, 1024) the spacing is 0.5 and in [2048, 4096)
+  // it is 2; 65,504 is the largest finite value.
+  std::string h;
+  ASSERT_TRUE(pack_float16({1.0}, &h));
+  EXPECT_EQ(h, std::string("\x00\x3c", 2));
+  ASSERT_TRUE(pack_float16({1000.3, 2049.0, 2051.0, 65504.0, 0.890570456810014}, &h));
+  const std::vector<double> r = unpack_float16(h, 5, "x");
+  EXPECT_EQ(r[0], 1000.5);  // nearest: 0.2 away, 1000.0 is 0.3 away
+  EXPECT_EQ(r[1], 2048.0);  // a tie goes to the even significand
+  EXPECT_EQ(r[2], 2052.0);
+  EXPECT_EQ(r[3], 65504.0);
+  EXPECT_NEAR(r[4], 0.890570456810014, 0.890570456810014 * std::ldexp(1.0, -11));  // the smallest stored maximum
+  h = "unchanged";
+  EXPECT_FALSE(pack_float16({1.0, 65520.0}, &h));  // rounds to infinity in binary16
+  EXPECT_FALSE(pack_float16({std::nan("")}, &h));
+  EXPECT_EQ(h, "unchanged");
+  expect_input_error([&] { unpack_float16(std::string(3, '\0'), 2, "case_days.max_dynamic_kips"); },
+                     "case_days.max_dynamic_kips: 3 bytes, expected 2 x 2 days");
+
+  Database db = Database::open(dir_ / "h.db", Database::Mode::kCreate);
+  db.exec("INSERT INTO cases (case_id, case_key, inputs_sha256, tug_name, tow_name, speed_kt, spectrum, heading_deg,"
+          " line_type, length_ft, mean_tension_lbf, days, seed) VALUES (1, 'k1', 'h', 'A', 'B', 5,"
+          " 'pierson-moskowitz', 0, 'fiber', 800, 1000, 2, 1), (2, 'k2', 'h', 'A', 'B', 5, 'pierson-moskowitz', 30,"
+          " 'fiber', 800, 1000, 2, 1), (3, 'k3', 'h', 'A', 'B', 5, 'pierson-moskowitz', 60, 'fiber', 800, 1000, 2, 1)");
+  CaseDays half{{1000.3, 2.5}, {}, {}, false, 2};
+  write_case_days(db, 1, half);
+  const CaseDays a = read_case_days(db, 1);
+  EXPECT_EQ(a.maxima_bytes, 2);
+  EXPECT_EQ(a.max_dynamic_kips, (std::vector<double>{1000.5, 2.5}));
+  CaseDays too_large{{70000.0, 2.5}, {}, {}, false, 2};
+  write_case_days(db, 2, too_large);  // does not fit: stored binary32
+  EXPECT_EQ(read_case_days(db, 2).maxima_bytes, 4);
+  EXPECT_EQ(read_case_days(db, 2).max_dynamic_kips, (std::vector<double>{70000.0, 2.5}));
+  write_case_days(db, 3, CaseDays{{1000.3, 7.0}, {}, {}, false});
+  expect_input_error([&] { write_case_days(db, 3, CaseDays{{1.0, 2.0}, {}, {}, false, 3}); }, "maxima_bytes = 3");
+  // The table's CHECK holds the blob to maxima_bytes x days.
+  EXPECT_THROW(db.exec("UPDATE case_days SET maxima_bytes = 2 WHERE case_id = 3"), std::exception);
+
+  // Repacking changes the binary32 cases that fit, counts them, and is idempotent.
+  EXPECT_EQ(pack_maxima_binary16(db), 1);
+  EXPECT_EQ(pack_maxima_binary16(db), 0);
+  const CaseDays c = read_case_days(db, 3);
+  EXPECT_EQ(c.maxima_bytes, 2);
+  EXPECT_EQ(c.max_dynamic_kips, (std::vector<double>{1000.5, 7.0}));
+  EXPECT_EQ(read_case_days(db, 2).maxima_bytes, 4);
 }
 
 }  // namespace

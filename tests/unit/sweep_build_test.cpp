@@ -30,13 +30,19 @@
 //   sweep-build-15 schema 7, day_records = "maxima": a build drops the stored cases' per-day slack
 //                  and snatch and writes new cases without them; every other stored value is the
 //                  same as with "all"
+//   sweep-build-16 schema 8, maxima_precision = "binary16": a build repacks the stored cases'
+//                  maxima and writes new cases as binary16, each maximum the binary16 of its
+//                  binary32 value; every other stored value is the same as with "binary32"
 #include <sqlite3.h>
 #include <sys/file.h>
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
+#include <map>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -44,6 +50,7 @@
 
 #include "common/units.hpp"
 #include "store/database.hpp"
+#include "store/packed_days.hpp"
 #include "sweep/build/numerics.hpp"
 #include "sweep/build/progress.hpp"
 #include "sweep/sweep.hpp"
@@ -535,6 +542,64 @@ TEST(SweepBuild, MaximaOnlyDayRecordsKeepEverythingButThePerDaySlackAndSnatch) {
   f.build(reference, 2, make_test_runner(), v2);
   EXPECT_EQ(query_int(reference, "SELECT count(*) FROM case_days WHERE slack_snatch_stored = 1"), kSmallSweepCases);
   EXPECT_EQ(dump_database(db, not_compared), dump_database(reference, not_compared));
+}
+
+// Every case's daily maxima, by case id.
+std::map<std::int64_t, store::CaseDays> all_case_days(const fs::path& path) {
+  store::Database d = store::Database::open(path, store::Database::Mode::kReadOnly);
+  std::vector<std::int64_t> ids;
+  store::Statement st = d.prepare("SELECT case_id FROM case_days ORDER BY case_id");
+  while (st.step()) ids.push_back(st.column_int(0));
+  std::map<std::int64_t, store::CaseDays> out;
+  for (const std::int64_t id : ids) out[id] = store::read_case_days(d, id);
+  return out;
+}
+
+TEST(SweepBuild, Binary16MaximaKeepEverythingElseAndRoundEachMaximumOnce) {  // sweep-build-16
+  Fixture f;
+  const fs::path db = f.dir / "half.db";
+  const fs::path reference = f.dir / "single.db";
+  f.build(db, 1, make_test_runner());
+  const std::map<std::int64_t, store::CaseDays> single = all_case_days(db);
+  std::set<std::string> not_compared = provenance_columns();
+  for (const char* c : {"case_days.max_dynamic_kips", "case_days.maxima_bytes"}) not_compared.insert(c);
+  const std::string before = dump_database(db, not_compared);
+
+  f.file.maxima_precision = sweep::MaximaPrecision::kBinary16;
+  const sweep::BuildSummary s = f.build(db, 1, make_test_runner());
+  EXPECT_EQ(s.scheduled, 0);
+  EXPECT_EQ(s.maxima_repacked, kSmallSweepCases);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM case_days WHERE maxima_bytes = 2 AND length(max_dynamic_kips) = "
+                          "2 * days"),
+            kSmallSweepCases);
+  EXPECT_EQ(dump_database(db, not_compared), before);  // every fit and result kept
+  const std::map<std::int64_t, store::CaseDays> half = all_case_days(db);
+  ASSERT_EQ(half.size(), single.size());
+  for (const auto& [id, days] : single) {
+    const std::vector<double>& h = half.at(id).max_dynamic_kips;
+    ASSERT_EQ(h.size(), days.max_dynamic_kips.size());
+    for (std::size_t i = 0; i < h.size(); ++i) {
+      // binary16 rounding to nearest: at most half a unit in the 11th significant bit.
+      EXPECT_LE(std::fabs(h[i] - days.max_dynamic_kips[i]), std::ldexp(std::fabs(days.max_dynamic_kips[i]), -11))
+          << "case " << id << " day " << i;
+    }
+  }
+  EXPECT_EQ(f.build(db, 1, make_test_runner()).maxima_repacked, 0);
+
+  // Cases computed under "binary16" store what a repack of binary32 cases stores.
+  sweep::BuildOptions v2;
+  v2.code_version = "99.0.0-test";
+  EXPECT_EQ(f.build(db, 2, make_test_runner(), v2).done, kSmallSweepCases);
+  f.file.maxima_precision = sweep::MaximaPrecision::kBinary32;
+  f.build(reference, 1, make_test_runner());
+  f.build(reference, 2, make_test_runner(), v2);
+  EXPECT_EQ(query_int(reference, "SELECT count(*) FROM case_days WHERE maxima_bytes = 4"), kSmallSweepCases);
+  {
+    store::Database d = store::Database::open(reference, store::Database::Mode::kReadWrite);
+    EXPECT_EQ(store::pack_maxima_binary16(d), kSmallSweepCases);
+  }
+  std::set<std::string> provenance = provenance_columns();
+  EXPECT_EQ(dump_database(db, provenance), dump_database(reference, provenance));
 }
 
 }  // namespace

@@ -5,7 +5,8 @@
 //                 2 x 5 x 2 x 3 x 4 x 4 x 3 = 2880 cases minus 12 per skipped condition; labels,
 //                 speeds (8.5 kt for AE 26), CG-47 factors 1.0 / 0.6
 //   sweep-file-2  the committed calibration sweep reproduces every CSV row (tensions, days)
-//   sweep-file-3  bad entries: file:line, key and what is allowed; day_records "all" by default
+//   sweep-file-3  bad entries: file:line, key and what is allowed; day_records "all" and
+//                 maxima_precision "binary32" by default
 //   sweep-file-4  seeds: common random numbers across towlines and tensions (EQ-SWEEP-4);
 //                 keys change exactly with their inputs (EQ-SWEEP-5/6)
 //   sweep-file-5  serialisation round trip is bit-exact
@@ -174,6 +175,15 @@ TEST(SweepFile, BadEntriesAreNamedWithFileAndLine) {  // sweep-file-3
                                "ok.toml")
                 .day_records,
             sweep::DayRecords::kMaxima);
+  // maxima_precision (schema 8): binary32 unless the file says binary16.
+  EXPECT_EQ(sweep::parse_sweep(ok, "ok.toml").maxima_precision, sweep::MaximaPrecision::kBinary32);
+  EXPECT_EQ(sweep::parse_sweep(replace(ok, "format = \"towdb-sweep-1\"",
+                                       "format = \"towdb-sweep-1\"\nmaxima_precision = \"binary16\""),
+                               "ok.toml")
+                .maxima_precision,
+            sweep::MaximaPrecision::kBinary16);
+  expect_error(replace(ok, "format = \"towdb-sweep-1\"", "format = \"towdb-sweep-1\"\nmaxima_precision = \"half\""),
+               "maxima_precision: \"half\" is not allowed; expected one of \"binary16\", \"binary32\"");
 }
 
 TEST(SweepFile, SeedsAndKeys) {  // sweep-file-4

@@ -370,6 +370,8 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
         fill_lowest_points(*writer, cases, keys, registered, catalog, options.lowest_elevation_m);
     writer->set_day_records(sweep.day_records);
     if (sweep.day_records == DayRecords::kMaxima) summary.slack_snatch_dropped = writer->drop_slack_snatch_days();
+    writer->set_maxima_precision(sweep.maxima_precision);
+    if (sweep.maxima_precision == MaximaPrecision::kBinary16) summary.maxima_repacked = writer->pack_maxima_binary16();
     summary.total = static_cast<int>(cases.size());
     for (std::size_t i = 0; i < cases.size(); ++i) {
       const CaseState state = registered[i].state;

@@ -73,6 +73,7 @@ struct BuildSummary {
   bool interrupted = false;   // stopped before every scheduled case ran
   bool worker = false;        // an MPI worker rank: computed, wrote nothing
   int lowest_points_filled = 0;  // fits stored before schema 6 given their lowest point
+  int maxima_repacked = 0;       // cases whose daily maxima were repacked as binary16 (maxima_precision)
   int slack_snatch_dropped = 0;  // cases whose per-day slack and snatch were dropped (day_records = "maxima")
   std::vector<std::string> failures;  // "case_id N (label): reason", this run
 };

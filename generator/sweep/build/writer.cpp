@@ -404,6 +404,7 @@ void DatabaseWriter::write_result(std::int64_t case_id, const CaseSpec& spec, co
     {
       store::CaseDays days;
       days.slack_snatch_stored = day_records_ == DayRecords::kAll;
+      days.maxima_bytes = maxima_precision_ == MaximaPrecision::kBinary16 ? 2 : 4;
       for (const DayOutcome& day : outcome.days) {
         days.max_dynamic_kips.push_back(n_to_kips(day.max_dynamic_n));
         if (!days.slack_snatch_stored) continue;
@@ -424,6 +425,12 @@ int DatabaseWriter::drop_slack_snatch_days() {
   int dropped = 0;
   db_.transaction([&] { dropped = store::drop_slack_snatch_days(db_); });
   return dropped;
+}
+
+int DatabaseWriter::pack_maxima_binary16() {
+  int changed = 0;
+  db_.transaction([&] { changed = store::pack_maxima_binary16(db_); });
+  return changed;
 }
 
 void DatabaseWriter::write_failure(std::int64_t case_id, const std::string& message, std::int64_t build_id) {

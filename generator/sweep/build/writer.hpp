@@ -87,6 +87,11 @@ class DatabaseWriter {
   // day_records = "maxima": drops the per-day slack time and snatch count of
   // the cases already stored (one transaction); returns how many changed.
   int drop_slack_snatch_days();
+  // How write_result stores each daily maximum (the sweep file's maxima_precision).
+  void set_maxima_precision(MaximaPrecision precision) { maxima_precision_ = precision; }
+  // maxima_precision = "binary16": repacks the binary32 maxima of the cases
+  // already stored (one transaction); returns how many changed.
+  int pack_maxima_binary16();
 
   void mark_running(std::int64_t case_id, std::int64_t build_id);
   // The fit, the results row, every day and status 'done', in one transaction.
@@ -106,6 +111,7 @@ class DatabaseWriter {
   void register_component(const model::TowlineComponent& c);
   store::Database& db_;
   DayRecords day_records_ = DayRecords::kAll;
+  MaximaPrecision maxima_precision_ = MaximaPrecision::kBinary32;
 };
 
 }  // namespace towdb::sweep

@@ -347,12 +347,17 @@ SweepFile parse_sweep(std::string_view text, const std::string& path) {
   SweepFile out;
   out.path = path;
   out.sha256 = io::sha256_hex(text);
-  check_keys(doc, path, "", {"format", "description", "day_records", "defaults", "grid", "case"});
+  check_keys(doc, path, "", {"format", "description", "day_records", "maxima_precision", "defaults", "grid", "case"});
   io::StrictTable top(doc, path, "");
   top.string("format", {kFormat});
   out.description = top.string("description");
   if (top.has("day_records")) {
     out.day_records = top.string("day_records", {"all", "maxima"}) == "maxima" ? DayRecords::kMaxima : DayRecords::kAll;
+  }
+  if (top.has("maxima_precision")) {
+    out.maxima_precision = top.string("maxima_precision", {"binary32", "binary16"}) == "binary16"
+                               ? MaximaPrecision::kBinary16
+                               : MaximaPrecision::kBinary32;
   }
   Settings defaults;
   if (doc.contains("defaults")) {

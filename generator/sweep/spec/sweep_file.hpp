@@ -74,11 +74,17 @@ struct CaseEntry {
 // snatch rate stay in results), for a database kept to a size budget.
 enum class DayRecords { kAll, kMaxima };
 
+// How each daily maximum is stored (top-level key maxima_precision):
+// "binary32" (4 bytes a day) or "binary16" (2 bytes, schema 8: 0.05 % relative
+// rounding at most; store/packed_days.hpp).
+enum class MaximaPrecision { kBinary32, kBinary16 };
+
 struct SweepFile {
   std::string path;
   std::string sha256;  // of the file's bytes
   std::string description;
   DayRecords day_records = DayRecords::kAll;
+  MaximaPrecision maxima_precision = MaximaPrecision::kBinary32;
   std::vector<GridEntry> grids;
   std::vector<CaseEntry> cases;
 };
