@@ -10,6 +10,11 @@
 //   scatter.png log-log scatter of ours vs thesis (gnuplot)
 //   run-signature.txt  the options and a hash of the ship files; a journal
 //               written under another signature is refused (no silent mixing)
+// With --database FILE the cases are not simulated: each is asked of the
+// database through the query library at the thesis's inputs (its mean tension
+// given), as a planner would ask it, and the same report compares the answers
+// with the thesis's; a refused question is listed with the refusal (the run is
+// quick and is never resumed: cases.csv is written anew).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,6 +23,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -27,6 +33,7 @@
 #include "output.hpp"
 #include "plot.hpp"
 #include "sweep/spec/calibration.hpp"
+#include "towdb/query.hpp"
 #include "validation/validation.hpp"
 
 namespace towdb::cli {
@@ -54,6 +61,7 @@ struct ValidateArgs {
   bool signed_drift = false;
   bool linear_non_surge_tension = false;
   bool nonnegative_wave_damping = false;
+  std::string database;  // --database: answers of this database instead of simulations
 };
 
 std::string read_text(const fs::path& path) {
@@ -316,9 +324,12 @@ std::string run_note(const ValidateArgs& a, const std::vector<validation::CaseOu
 }
 
 // The summary table on stdout against the targets.
-void print_summary(const validation::Report& report, std::size_t cases, const fs::path& report_path) {
+// `not_ok` names the cases without a value ("failed"; "refused" for a database's answers).
+void print_summary(const validation::Report& report, std::size_t cases, const fs::path& report_path,
+                   const char* not_ok = "failed") {
   const auto& v = report.valid;
-  std::cout << "Validation against thesis Appendix C: " << cases << " cases, " << report.failed << " failed\n\n";
+  std::cout << "Validation against thesis Appendix C: " << cases << " cases, " << report.failed << " " << not_ok
+            << "\n\n";
   TextTable t({"cases <= 300 kips", "value", "target"});
   t.add_row({"count", std::to_string(v.count), ""});
   t.add_row({"median ratio (ours / thesis)", fmt(v.median_ratio, 3),
@@ -380,6 +391,102 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
   return report.failed == static_cast<int>(outcomes.size()) ? 1 : 0;
 }
 
+// One calibration case asked of the database as a planner would: the thesis's
+// tug, tow, line, length, speed, wind, heading and mean tension; no
+// extrapolation. A refusal is a failed outcome whose error is the refusal.
+validation::CaseOutcome ask_database(query::Database& db, const sweep::CalibrationRow& row) {
+  validation::CaseOutcome c;
+  c.row = row;
+  query::QueryRequest rq;
+  rq.tug = row.tug;
+  rq.tow = row.tow;
+  rq.line = row.line;
+  rq.values.speed_kt = row.speed_kt;
+  rq.values.wind_kt = row.wind_kt;
+  rq.values.heading_deg = row.heading_deg;
+  rq.values.length_ft = row.length_ft;
+  rq.values.mean_tension_lbf = row.mean_tension_lbf;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const query::QueryResult r = db.query(rq);
+    c.status = validation::CaseStatus::kOk;
+    c.ours_kips = r.values.dynamic_999_kips;
+    c.ci_low_kips = r.values.ci_low_kips;
+    c.ci_high_kips = r.values.ci_high_kips;
+    c.slack_fraction = r.values.slack_fraction;
+    c.above_breaking = r.values.extreme_tension_lbf > r.values.breaking_strength_lbf;
+  } catch (const query::QueryError& e) {
+    if (!e.is_input()) throw;
+    c.status = validation::CaseStatus::kFailed;
+    c.error = std::string("refused: ") + e.what();
+  }
+  c.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return c;
+}
+
+// What the refusals name first ("mean_tension_lbf = ..." -> mean_tension_lbf), counted.
+std::map<std::string, int> refusals_by_field(const std::vector<validation::CaseOutcome>& outcomes) {
+  std::map<std::string, int> out;
+  for (const auto& c : outcomes) {
+    if (c.status == validation::CaseStatus::kOk) continue;
+    const std::string text = c.error.substr(c.error.find(": ") == std::string::npos ? 0 : c.error.find(": ") + 2);
+    const std::size_t eq = text.find(" = ");
+    ++out[eq == std::string::npos || eq > 40 ? std::string("other") : text.substr(0, eq)];
+  }
+  return out;
+}
+
+int run_validate_database(const Context& ctx, const ValidateArgs& a) {
+  check_output_dir("--out", a.out_dir);
+  const io::ShipCatalog catalog = load_catalog(ctx);
+  const std::vector<sweep::CalibrationRow> rows =
+      select_rows(sweep::parse_calibration_csv(read_text(a.cases_path), a.cases_path, catalog), a);
+  std::unique_ptr<query::Database> db;
+  try {
+    db = std::make_unique<query::Database>(a.database);
+  } catch (const query::QueryError& e) {
+    if (e.is_input()) throw InputError("--database: " + std::string(e.what()));
+    throw;
+  }
+  std::vector<validation::CaseOutcome> outcomes;
+  for (const auto& row : rows) outcomes.push_back(ask_database(*db, row));
+
+  const fs::path out(a.out_dir);
+  fs::create_directories(out);
+  std::error_code ignored;
+  fs::remove(out / "run-signature.txt", ignored);  // a simulation journal's; this one is never resumed
+  std::string journal = validation::journal_header() + "\n";
+  for (const auto& c : outcomes) journal += validation::journal_line(c) + "\n";
+  write_atomically(out / "cases.csv", journal);
+
+  int answered = 0;
+  for (const auto& c : outcomes) answered += c.status == validation::CaseStatus::kOk ? 1 : 0;
+  std::ostringstream note;
+  note << "Answers of the database `" << fs::path(a.database).filename().string()
+       << "` (`towdb validate --database`): each case asked through the query library at the thesis's inputs, "
+          "its mean tension given, without extrapolation; nothing simulated. "
+       << answered << " of " << outcomes.size() << " cases answered";
+  const std::map<std::string, int> refused = refusals_by_field(outcomes);
+  if (!refused.empty()) {
+    note << "; refused, by the input named first:";
+    for (const auto& [field, n] : refused) note << " " << field << " " << n;
+  }
+  note << " (a refused case is listed among the failures below).";
+  const validation::Report report = validation::make_report(outcomes);
+  write_atomically(out / "report.md", validation::report_markdown(report, note.str()));
+  if (!a.no_plot) {
+    try {
+      write_scatter_plot(out / "scatter.png", outcomes);
+    } catch (const std::exception& e) {
+      std::cerr << "validate: warning: no plot: " << e.what() << "\n";
+    }
+  }
+  std::cout << "Database " << a.database << ": " << answered << " of " << outcomes.size()
+            << " thesis cases answered\n";
+  print_summary(report, outcomes.size(), out / "report.md", "refused");
+  return answered == 0 ? 1 : 0;
+}
+
 }  // namespace
 
 void add_validate_command(CLI::App& app, Context& ctx) {
@@ -420,7 +527,18 @@ void add_validate_command(CLI::App& app, Context& ctx) {
               "(EQ-SURGE-6)");
   c->add_flag("--nonnegative-wave-damping", a->nonnegative_wave_damping,
               "Diagnostic: hold each vessel's wave-induced surge damping at >= 0");
-  c->callback([&ctx, a] { ctx.action = [&ctx, a] { return run_validate(ctx, *a); }; });
+  CLI::Option* database = c->add_option(
+      "--database", a->database,
+      "Ask each case of a towdb database (query library, the thesis's inputs) instead of simulating it");
+  for (const char* simulation_only :
+       {"--threads", "--days-scale", "--min-days", "--response-frequencies", "--fresh", "--no-second-order-forces",
+        "--no-wave-surge-damping", "--thesis-towline-fit", "--tow-drift-at-tow", "--added-resistance-aft-of-beam",
+        "--signed-drift", "--linear-non-surge-tension", "--nonnegative-wave-damping"}) {
+    database->excludes(c->get_option(simulation_only));
+  }
+  c->callback([&ctx, a] {
+    ctx.action = [&ctx, a] { return a->database.empty() ? run_validate(ctx, *a) : run_validate_database(ctx, *a); };
+  });
 }
 
 }  // namespace towdb::cli

@@ -6,6 +6,10 @@
 //   cli-validate-2  a second invocation resumes: the ok case is reused
 //                   bit for bit, not recomputed; other options are refused
 //   cli-validate-3  bad arguments -> exit 2 with a named message
+//   cli-validate-4  --database: each case asked of the bundled database; an answer is
+//                   the one `towdb query` gives at the same inputs, bit for bit; a
+//                   question outside the stored span is reported as refused, naming it;
+//                   simulation options and a missing database exit 2
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -14,6 +18,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "test_support.hpp"
 
@@ -105,6 +110,53 @@ TEST(CliValidate, BadArgumentsExitTwo) {  // cli-validate-3
     EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "rows")) << row;
   }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliValidate, DatabaseAnswersAreTheQuerysAndRefusalsAreNamed) {  // cli-validate-4
+  const auto dir = make_temp_dir("towdb-validate-db");
+  // Run 206 (inside the bundled database's span) and thesis run 1045's inputs at 3 kt
+  // (ARS 50 / AE 26, 800 ft fiber, 30 kt, 0 deg), below its stored 5-8.5 kt.
+  {
+    std::ofstream(dir / "table.csv") << "case,tug,tow,speed_kt,wind_kt,heading_deg,length_ft,line,mean_lbf,days,"
+                                        "dyn_kips\n206,T-ATF,FFG7,9.0,20.0,180.0,800.0,f,79000.0,500,98.5\n"
+                                        "1045,ARS50,AE26,3.0,30.0,0.0,800.0,f,84000.0,500,50.0\n";
+  }
+  const std::string base = "validate --cases '" + (dir / "table.csv").string() + "' --out '" + (dir / "out").string() +
+                           "' --no-plot --database db/towdb.sqlite";
+  const CommandResult r = run_towdb(base);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("1 of 2 thesis cases answered"), std::string::npos) << r.out;
+  const std::string report = test::read_text(dir / "out" / "report.md");
+  EXPECT_NE(report.find("refused, by the input named first: speed_kt 1"), std::string::npos) << report;
+  EXPECT_NE(report.find("| 1045 | ARS 50 | AE 26 | refused: speed_kt = 3 is outside the stored range"),
+            std::string::npos)
+      << report;
+
+  const std::string journal = test::read_text(dir / "out" / "cases.csv");
+  const auto at = journal.find("\n206,T-ATF 166,FFG 7,");
+  ASSERT_NE(at, std::string::npos) << journal;
+  std::vector<std::string> fields;
+  std::stringstream line(journal.substr(at + 1, journal.find('\n', at + 1) - at - 1));
+  for (std::string f; std::getline(line, f, ',');) fields.push_back(f);
+  ASSERT_GE(fields.size(), 14u);
+  EXPECT_EQ(fields[12], "ok");
+  const CommandResult q = run_towdb(
+      "query --db db/towdb.sqlite --tug T-ATF --tow FFG7 --line fiber --speed-kt 9 --wind-kt 20 --heading-deg 180 "
+      "--length-ft 800 --mean-tension-lbf 79000 --json");
+  ASSERT_EQ(q.exit_code, 0) << q.err;
+  EXPECT_EQ(std::stod(fields[13]), nlohmann::json::parse(q.out).at("dynamic_999_kips").get<double>());
+
+  // Simulation options have no meaning here; a database that is not there is named.
+  const CommandResult mixed = run_towdb(base + " --days-scale 0.1");
+  EXPECT_EQ(mixed.exit_code, 2);
+  EXPECT_NE(mixed.err.find("--days-scale"), std::string::npos) << mixed.err;
+  const CommandResult missing = run_towdb("validate --cases '" + (dir / "table.csv").string() + "' --out '" +
+                                          (dir / "out2").string() + "' --database '" + (dir / "none.sqlite").string() +
+                                          "'");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("--database: " + (dir / "none.sqlite").string()), std::string::npos) << missing.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out2"));
   std::filesystem::remove_all(dir);
 }
 
