@@ -141,6 +141,9 @@ TEST_F(CliAudit, EveryQuestionIsAnsweredOrRefusedSameForAnyThreadCount) {  // cl
     EXPECT_TRUE(s.contains(key)) << key;
   }
   EXPECT_EQ(s.at("mean_tension"), "uniform_in_stored_span");  // no build recorded: no basis
+  EXPECT_NE(r.err.find("warning: the questions' mean tensions are drawn uniformly in the stored span"),
+            std::string::npos)
+      << r.err;  // said even with --json
   EXPECT_EQ(s.at("days"), 3);
   ASSERT_EQ(j.at("questions").size(), 2u);
   int answered = 0, lha = 0;
