@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "common/error.hpp"
+#include "store/key_bytes.hpp"
 #include "store/packed_days.hpp"
 
 namespace towdb::store {
@@ -24,6 +25,7 @@ const Migration kMigrations[] = {
 // the same transaction after its SQL (by file name).
 void after_migration(Database& db, const std::string& name) {
   if (name == "004_case_days.sql") pack_daily_maxima(db);
+  if (name == "009_key_bytes.sql") store_keys_as_bytes(db);
 }
 
 // Application id stamped in the file header so a towdb database can be told

@@ -16,6 +16,7 @@
 
 #include "common/error.hpp"
 #include "store/database.hpp"
+#include "store/key_bytes.hpp"
 #include "store/packed_days.hpp"
 #include "test_support.hpp"
 
@@ -304,6 +305,42 @@ TEST_F(StoreTest, Binary16MaximaAreTheNearestHalfAndRepackedOnlyWhereTheyFit) {
   EXPECT_EQ(c.maxima_bytes, 2);
   EXPECT_EQ(c.max_dynamic_kips, (std::vector<double>{1000.5, 7.0}));
   EXPECT_EQ(read_case_days(db, 2).maxima_bytes, 4);
+}
+
+TEST_F(StoreTest, MigrationNineStoresTheCaseKeysAsTheirThirtyTwoBytes) {
+  // EVIDENCE-OF: schema/009_key_bytes.sql (hex TEXT keys -> 32-byte BLOBs; other values left as they are)
+  const std::string hex = "053d96ac44b6bf61ffcb33c84f1fbe40ae35f738068b85319262fffe939fd7a8";
+  const std::string bytes = key_bytes(hex, "case_key");
+  ASSERT_EQ(bytes.size(), 32u);
+  EXPECT_EQ(static_cast<unsigned char>(bytes[0]), 0x05);
+  EXPECT_EQ(static_cast<unsigned char>(bytes[31]), 0xa8);
+  EXPECT_EQ(key_bytes("053D96AC44B6BF61FFCB33C84F1FBE40AE35F738068B85319262FFFE939FD7A8", "x"), bytes);
+  expect_input_error([] { key_bytes("k7", "case_key"); }, "case_key = 'k7': must be a SHA-256 as 64 hexadecimal");
+  expect_input_error([&] { key_bytes(hex.substr(0, 63) + "g", "condition_key"); }, "condition_key = '");
+
+  const auto path = dir_ / "v8.db";
+  {
+    Database db = Database::open(path, Database::Mode::kCreate);
+    db.exec("INSERT INTO cases (case_id, case_key, inputs_sha256, condition_key, tug_name, tow_name, speed_kt, spectrum,"
+            " heading_deg, line_type, length_ft, mean_tension_lbf, days, seed) VALUES (1, '" + hex + "', '" + hex +
+            "', '" + hex + "', 'A', 'B', 5, 'pierson-moskowitz', 0, 'fiber', 800, 1000, 2, 1), (2, 'k2', 'h2', NULL,"
+            " 'A', 'B', 5, 'pierson-moskowitz', 30, 'fiber', 800, 1000, 2, 1)");
+    db.exec("PRAGMA user_version = 8");
+  }
+  Database db = Database::open(path, Database::Mode::kReadWrite);  // migrates
+  EXPECT_EQ(db.schema_version(), latest_schema_version());
+  Statement a = db.prepare("SELECT typeof(case_key), case_key = ?1, inputs_sha256 = ?1, condition_key = ?1 "
+                           "FROM cases WHERE case_id = 1");
+  a.bind_blob(1, bytes);
+  ASSERT_TRUE(a.step());
+  EXPECT_EQ(a.column_text(0), "blob");
+  EXPECT_EQ(a.column_int(1), 1);
+  EXPECT_EQ(a.column_int(2), 1);
+  EXPECT_EQ(a.column_int(3), 1);
+  Statement b = db.prepare("SELECT case_key, typeof(condition_key) FROM cases WHERE case_id = 2");
+  ASSERT_TRUE(b.step());
+  EXPECT_EQ(b.column_text(0), "k2");  // not a SHA-256: left as it was
+  EXPECT_EQ(b.column_text(1), "null");
 }
 
 }  // namespace

@@ -93,6 +93,10 @@ TEST(SweepBuild, StoresEveryCaseInSchemaUnits) {  // sweep-build-1
   // 16 grid cases of 30 days, explicit-1 with 40 days, explicit-2 with the default 30.
   EXPECT_EQ(query_int(db, "SELECT sum(days) FROM case_days"), 16 * 30 + 40 + 30);
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM case_days WHERE length(max_dynamic_kips) = 4 * days"), kSmallSweepCases);
+  // schema 9: the three keys as the 32 bytes of their SHA-256
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE typeof(case_key) = 'blob' AND length(case_key) = 32 AND "
+                          "length(inputs_sha256) = 32 AND length(condition_key) = 32"),
+            kSmallSweepCases);
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM builds WHERE status = 'completed' AND cases_done = 18"), 1);
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM vessels"), 6);  // T-ATF, ARS 50, FFG 7, YRBM, AE 26, CG 47
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE fit_id IS NULL"), 0);

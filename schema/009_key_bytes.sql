@@ -1,0 +1,9 @@
+-- towdb schema, migration 9: the case keys as bytes (documented in
+-- schema/README.md, "cases"). cases.case_key, cases.inputs_sha256 and
+-- cases.condition_key hold the 32 bytes of their SHA-256 as a BLOB instead of
+-- its 64 hexadecimal digits as TEXT: half the size of each row's keys and of
+-- the two unique indexes on them. The columns keep their names, declared types
+-- and constraints (a declared TEXT column stores a BLOB unchanged). The values
+-- are converted by the migration's second step (generator/store/key_bytes.cpp:
+-- SQLite 3.40 has no unhex()), in the migration's transaction; this file has
+-- no statement of its own.
