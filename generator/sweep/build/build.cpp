@@ -15,6 +15,7 @@
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
 #include "store/database.hpp"
+#include "store/key_bytes.hpp"
 #include "sweep/build/build_lock.hpp"
 #include "sweep/build/build_mpi.hpp"
 #include "sweep/build/build_work.hpp"
@@ -211,7 +212,7 @@ void check_before_writing(const std::filesystem::path& path, const std::vector<C
   const std::string& stored = *recorded;
   store::Statement by_key = db.prepare("SELECT status FROM cases WHERE case_key = ?");
   for (const CaseKeys& k : keys) {
-    by_key.bind(1, k.case_key);
+    by_key.bind_blob(1, store::key_bytes(k.case_key, "case_key"));
     const CaseState state = by_key.step() ? state_of_stored(by_key.column_text(0)) : CaseState::kNew;
     by_key.reset();
     if (!computes(state, retry_failed)) continue;
@@ -259,11 +260,11 @@ std::vector<PlannedCase> plan_build(const std::optional<std::filesystem::path>& 
   store::Statement by_key = db.prepare("SELECT status FROM cases WHERE case_key = ?");
   store::Statement by_condition = db.prepare("SELECT 1 FROM cases WHERE condition_key = ?");
   for (PlannedCase& p : plan) {
-    by_key.bind(1, p.keys.case_key);
+    by_key.bind_blob(1, store::key_bytes(p.keys.case_key, "case_key"));
     if (by_key.step()) {
       p.state = state_of_stored(by_key.column_text(0));
     } else {
-      by_condition.bind(1, p.spec.condition_key);
+      by_condition.bind_blob(1, store::key_bytes(p.spec.condition_key, "condition_key"));
       if (by_condition.step()) p.state = CaseState::kChanged;
       by_condition.reset();
     }

@@ -8,6 +8,7 @@
 
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "store/key_bytes.hpp"
 #include "store/packed_days.hpp"
 
 namespace towdb::sweep {
@@ -46,8 +47,8 @@ constexpr int kCoefficientLengthPower[9] = {1, 1, 2, 2, 2, 3, 3, 3, 3};
 // Binds every input column of `cases` (parameters 1..26 in this order).
 void bind_case_inputs(store::Statement& st, const CaseSpec& s, const CaseKeys& k, std::int64_t tug_id,
                       std::int64_t tow_id) {
-  st.bind(1, k.case_key)
-      .bind(2, k.inputs_sha256)
+  st.bind_blob(1, store::key_bytes(k.case_key, "case_key"))
+      .bind_blob(2, store::key_bytes(k.inputs_sha256, "inputs_sha256"))
       .bind(3, s.sweep_label)
       .bind(4, s.tug)
       .bind(5, s.tow)
@@ -69,7 +70,7 @@ void bind_case_inputs(store::Statement& st, const CaseSpec& s, const CaseKeys& k
       .bind(21, s.mean_tension_label)
       .bind(22, s.days)
       .bind(23, s.seed)
-      .bind(24, s.condition_key)
+      .bind_blob(24, store::key_bytes(s.condition_key, "condition_key"))
       .bind(25, s.nominal_speed_kt)
       .bind(26, s.calculated_mean_tension_lbf);
 }
@@ -259,7 +260,7 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
           register_component(seg.component);
         }
       }
-      by_key.bind(1, k.case_key);
+      by_key.bind_blob(1, store::key_bytes(k.case_key, "case_key"));
       if (by_key.step()) {
         const std::int64_t id = by_key.column_int(0);
         const std::string status = by_key.column_text(1);
@@ -273,7 +274,7 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
         continue;
       }
       by_key.reset();
-      by_condition.bind(1, s.condition_key);
+      by_condition.bind_blob(1, store::key_bytes(s.condition_key, "condition_key"));
       if (by_condition.step()) {
         const std::int64_t id = by_condition.column_int(0);
         by_condition.reset();
