@@ -448,13 +448,15 @@ int run_validate_database(const Context& ctx, const ValidateArgs& a) {
     if (e.is_input()) throw InputError("--database: " + std::string(e.what()));
     throw;
   }
+  const fs::path out(a.out_dir);
+  if (fs::exists(out / "run-signature.txt")) {  // never overwrite the resume state of a simulation run
+    throw InputError("--out = " + a.out_dir + ": holds a simulation run's journal (run-signature.txt, cases.csv); " +
+                     "give --database answers another directory");
+  }
   std::vector<validation::CaseOutcome> outcomes;
   for (const auto& row : rows) outcomes.push_back(ask_database(*db, row));
 
-  const fs::path out(a.out_dir);
   fs::create_directories(out);
-  std::error_code ignored;
-  fs::remove(out / "run-signature.txt", ignored);  // a simulation journal's; this one is never resumed
   std::string journal = validation::journal_header() + "\n";
   for (const auto& c : outcomes) journal += validation::journal_line(c) + "\n";
   write_atomically(out / "cases.csv", journal);

@@ -9,7 +9,8 @@
 //   cli-validate-4  --database: each case asked of the bundled database; an answer is
 //                   the one `towdb query` gives at the same inputs, bit for bit; a
 //                   question outside the stored span is reported as refused, naming it;
-//                   simulation options and a missing database exit 2
+//                   simulation options, a missing database and an --out that holds a
+//                   simulation run's journal exit 2, nothing written
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -157,6 +158,15 @@ TEST(CliValidate, DatabaseAnswersAreTheQuerysAndRefusalsAreNamed) {  // cli-vali
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("--database: " + (dir / "none.sqlite").string()), std::string::npos) << missing.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out2"));
+  // A simulation run's journal (its resume state) is never overwritten.
+  std::filesystem::create_directories(dir / "sim");
+  { std::ofstream(dir / "sim" / "run-signature.txt") << "options\n"; }
+  { std::ofstream(dir / "sim" / "cases.csv") << "journal\n"; }
+  const CommandResult over = run_towdb("validate --cases '" + (dir / "table.csv").string() + "' --out '" +
+                                       (dir / "sim").string() + "' --database db/towdb.sqlite");
+  EXPECT_EQ(over.exit_code, 2);
+  EXPECT_NE(over.err.find("holds a simulation run's journal"), std::string::npos) << over.err;
+  EXPECT_EQ(test::read_text(dir / "sim" / "cases.csv"), "journal\n");
   std::filesystem::remove_all(dir);
 }
 
