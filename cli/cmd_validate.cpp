@@ -346,6 +346,22 @@ void print_summary(const validation::Report& report, std::size_t cases, const fs
   std::cout << "\nreport: " << report_path.string() << "\n";
 }
 
+// report.md (with the run's `note`) and, unless `no_plot`, scatter.png in `out`: what
+// a simulation run and a database's answers both write; returns the report.
+validation::Report write_report_and_plot(const fs::path& out, const std::vector<validation::CaseOutcome>& outcomes,
+                                         const std::string& note, bool no_plot) {
+  validation::Report report = validation::make_report(outcomes);
+  write_atomically(out / "report.md", validation::report_markdown(report, note));
+  if (!no_plot) {
+    try {
+      write_scatter_plot(out / "scatter.png", outcomes);
+    } catch (const std::exception& e) {
+      std::cerr << "validate: warning: no plot: " << e.what() << "\n";
+    }
+  }
+  return report;
+}
+
 int run_validate(const Context& ctx, const ValidateArgs& a) {
   check_output_dir("--out", a.out_dir);
   const io::ShipCatalog catalog = load_catalog(ctx);
@@ -378,15 +394,8 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_final_journal(journal, rows, outcomes, done);
 
-  const validation::Report report = validation::make_report(outcomes);
-  write_atomically(out / "report.md", validation::report_markdown(report, run_note(a, outcomes, wall_s, reused)));
-  if (!a.no_plot) {
-    try {
-      write_scatter_plot(out / "scatter.png", outcomes);
-    } catch (const std::exception& e) {
-      std::cerr << "validate: warning: no plot: " << e.what() << "\n";
-    }
-  }
+  const validation::Report report =
+      write_report_and_plot(out, outcomes, run_note(a, outcomes, wall_s, reused), a.no_plot);
   print_summary(report, outcomes.size(), out / "report.md");
   return report.failed == static_cast<int>(outcomes.size()) ? 1 : 0;
 }
@@ -429,7 +438,8 @@ std::map<std::string, int> refusals_by_field(const std::vector<validation::CaseO
   std::map<std::string, int> out;
   for (const auto& c : outcomes) {
     if (c.status == validation::CaseStatus::kOk) continue;
-    const std::string text = c.error.substr(c.error.find(": ") == std::string::npos ? 0 : c.error.find(": ") + 2);
+    const std::size_t colon = c.error.find(": ");
+    const std::string text = colon == std::string::npos ? c.error : c.error.substr(colon + 2);
     const std::size_t eq = text.find(" = ");
     ++out[eq == std::string::npos || eq > 40 ? std::string("other") : text.substr(0, eq)];
   }
@@ -474,15 +484,7 @@ int run_validate_database(const Context& ctx, const ValidateArgs& a) {
     for (const auto& [field, n] : refused) note << " " << field << " " << n;
   }
   note << " (a refused case is listed among the failures below).";
-  const validation::Report report = validation::make_report(outcomes);
-  write_atomically(out / "report.md", validation::report_markdown(report, note.str()));
-  if (!a.no_plot) {
-    try {
-      write_scatter_plot(out / "scatter.png", outcomes);
-    } catch (const std::exception& e) {
-      std::cerr << "validate: warning: no plot: " << e.what() << "\n";
-    }
-  }
+  const validation::Report report = write_report_and_plot(out, outcomes, note.str(), a.no_plot);
   std::cout << "Database " << a.database << ": " << answered << " of " << outcomes.size()
             << " thesis cases answered\n";
   print_summary(report, outcomes.size(), out / "report.md", "refused");
