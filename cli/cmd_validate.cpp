@@ -60,6 +60,7 @@ struct ValidateArgs {
   bool added_resistance_aft_of_beam = false;
   bool signed_drift = false;
   bool linear_non_surge_tension = false;
+  std::string non_surge_stiffness = "a10";
   bool nonnegative_wave_damping = false;
   std::string database;  // --database: answers of this database instead of simulations
 };
@@ -132,6 +133,9 @@ std::string run_signature(const validation::RunOptions& o, const io::ShipCatalog
   if (o.added_resistance_aft_of_beam) os << " added_resistance_aft_of_beam=1";
   if (o.signed_drift) os << " signed_drift=1";
   if (o.linear_non_surge_tension) os << " linear_non_surge_tension=1";
+  if (o.non_surge_stiffness != simulation::CaseOptions::NonSurgeStiffness::kA10) {
+    os << " non_surge_stiffness=" << static_cast<int>(o.non_surge_stiffness);
+  }
   if (o.nonnegative_wave_damping) os << " nonnegative_wave_damping=1";
   os << " ships_sha256=" << io::sha256_hex(hashes) << "\n";
   return os.str();
@@ -204,6 +208,14 @@ std::vector<sweep::CalibrationRow> select_rows(std::vector<sweep::CalibrationRow
   return rows;
 }
 
+// --non-surge-stiffness (its values are checked by CLI11).
+simulation::CaseOptions::NonSurgeStiffness non_surge_stiffness(const std::string& name) {
+  using S = simulation::CaseOptions::NonSurgeStiffness;
+  if (name == "equivalent-non-surge") return S::kEquivalentNonSurge;
+  if (name == "equivalent-total") return S::kEquivalentTotal;
+  return S::kA10;
+}
+
 validation::RunOptions run_options(const ValidateArgs& a) {
   validation::RunOptions options;
   options.days_scale = a.days_scale;
@@ -217,6 +229,7 @@ validation::RunOptions run_options(const ValidateArgs& a) {
   options.added_resistance_aft_of_beam = a.added_resistance_aft_of_beam;
   options.signed_drift = a.signed_drift;
   options.linear_non_surge_tension = a.linear_non_surge_tension;
+  options.non_surge_stiffness = non_surge_stiffness(a.non_surge_stiffness);
   options.nonnegative_wave_damping = a.nonnegative_wave_damping;
   options.validate();
   return options;
@@ -316,6 +329,7 @@ std::string run_note(const ValidateArgs& a, const std::vector<validation::CaseOu
   if (a.added_resistance_aft_of_beam) note << " --added-resistance-aft-of-beam";
   if (a.signed_drift) note << " --signed-drift";
   if (a.linear_non_surge_tension) note << " --linear-non-surge-tension";
+  if (a.non_surge_stiffness != "a10") note << " --non-surge-stiffness " << a.non_surge_stiffness;
   if (a.nonnegative_wave_damping) note << " --nonnegative-wave-damping";
   note << "`. Simulated days per case = max(" << a.min_days << ", round(" << fmt(a.days_scale)
        << " x thesis days)); seed = thesis case number. Sum of case run times " << fmt(case_time_s, 0)
@@ -529,6 +543,11 @@ void add_validate_command(CLI::App& app, Context& ctx) {
   c->add_flag("--linear-non-surge-tension", a->linear_non_surge_tension,
               "Diagnostic: the non-surge extension as a linear tension added to the polynomial's surge tension "
               "(EQ-SURGE-6)");
+  c->add_option("--non-surge-stiffness", a->non_surge_stiffness,
+                 "Diagnostic, with --linear-non-surge-tension: a10 (the polynomial's linear terms), "
+                 "equivalent-non-surge or equivalent-total (Gaussian equivalent linearisation, EQ-SURGE-7)")
+      ->check(CLI::IsMember({"a10", "equivalent-non-surge", "equivalent-total"}))
+      ->needs("--linear-non-surge-tension");
   c->add_flag("--nonnegative-wave-damping", a->nonnegative_wave_damping,
               "Diagnostic: hold each vessel's wave-induced surge damping at >= 0");
   CLI::Option* database = c->add_option(
@@ -537,7 +556,7 @@ void add_validate_command(CLI::App& app, Context& ctx) {
   for (const char* simulation_only :
        {"--threads", "--days-scale", "--min-days", "--response-frequencies", "--fresh", "--no-second-order-forces",
         "--no-wave-surge-damping", "--thesis-towline-fit", "--tow-drift-at-tow", "--added-resistance-aft-of-beam",
-        "--signed-drift", "--linear-non-surge-tension", "--nonnegative-wave-damping"}) {
+        "--signed-drift", "--linear-non-surge-tension", "--non-surge-stiffness", "--nonnegative-wave-damping"}) {
     database->excludes(c->get_option(simulation_only));
   }
   c->callback([&ctx, a] {

@@ -289,6 +289,64 @@ SurgeParameters surge_parameters(const model::Vessel& tug, const model::Vessel& 
 
 }  // namespace
 
+namespace {
+
+// The first-order extension of component j per unit wave amplitude: EQ-SURGE-1..3
+// with the linear line tau = (k + i w c) xi, harmonic at the encounter frequency w.
+Complex linear_extension(const CaseModel& m, std::size_t j, double w, double k, double c) {
+  const SurgeParameters& p = m.surge;
+  const double c1 = p.cos_alpha_tug, c2 = p.cos_alpha_tow;
+  const Complex kc(k, w * c);
+  const Complex a11 = -w * w * p.tug_mass_kg + Complex(0, w * p.tug_damping_n_s_m) + kc * c1 * c1;
+  const Complex a22 = -w * w * p.tow_mass_kg + Complex(0, w * p.tow_damping_n_s_m) + kc * c2 * c2;
+  const Complex a12 = -kc * c1 * c2;
+  const Complex b1 = m.h_f1_tug[j] - kc * c1 * m.h_xi_ns[j];
+  const Complex b2 = m.h_f1_tow[j] + kc * c2 * m.h_xi_ns[j];
+  const Complex det = a11 * a22 - a12 * a12;
+  const Complex x1 = (b1 * a22 - a12 * b2) / det;
+  const Complex x7 = (a11 * b2 - a12 * b1) / det;
+  return c1 * x1 - c2 * x7 + m.h_xi_ns[j];
+}
+
+// EQ-SURGE-7 (diagnostic): the line that carries the non-surge tension under
+// EQ-SURGE-6, the polynomial's Gaussian equivalent (EQ-TOWLINE-18) over the
+// non-surge extension (kEquivalentNonSurge) or over the whole first-order
+// extension of the linear surge system (kEquivalentTotal), which depends on
+// the line itself: iterated to a fixed point.
+coupled::LinearLine equivalent_line(const CaseModel& m) {
+  const auto& comps = m.synthesizer->plan().components();
+  const auto& a = m.fit->coefficients();
+  const bool total = m.options.non_surge_stiffness == CaseOptions::NonSurgeStiffness::kEquivalentTotal;
+  coupled::LinearLine line{a.a10(), a.a01()};
+  constexpr int kMaxIterations = 200;
+  constexpr double kRelativeChange = 1e-9;  // far below any effect on a daily maximum
+  for (int it = 0; it < kMaxIterations; ++it) {
+    double s2 = 0.0, v2 = 0.0;
+    for (std::size_t j = 0; j < comps.size(); ++j) {
+      const double w = comps[j].encounter_omega_rad_s;
+      const Complex xi = total ? linear_extension(m, j, w, line.stiffness_n_m, line.damping_n_s_m) : m.h_xi_ns[j];
+      const double e = 0.5 * comps[j].amplitude_m * comps[j].amplitude_m * std::norm(xi);
+      s2 += e;
+      v2 += w * w * e;
+    }
+    const towline::EquivalentLinearLine eq = towline::gaussian_equivalent_line(a, s2, v2);
+    const coupled::LinearLine next{eq.stiffness_n_m, eq.damping_n_s_m};
+    if (!(next.stiffness_n_m > 0.0)) {
+      throw NumericalError("equivalent linear towline: stiffness " + format_value(next.stiffness_n_m) +
+                           " N/m is not positive");
+    }
+    const bool settled = std::abs(next.stiffness_n_m - line.stiffness_n_m) <= kRelativeChange * next.stiffness_n_m &&
+                         std::abs(next.damping_n_s_m - line.damping_n_s_m) <=
+                             kRelativeChange * std::max(std::abs(next.damping_n_s_m), 1.0);
+    line = next;
+    if (!total || settled) return line;
+  }
+  throw NumericalError("equivalent linear towline: no fixed point in " + std::to_string(kMaxIterations) +
+                       " iterations");
+}
+
+}  // namespace
+
 std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const CaseOptions& options) {
   inputs.validate();
   options.validate();
@@ -330,6 +388,11 @@ std::shared_ptr<const CaseModel> prepare_case(const CaseInputs& inputs, const Ca
   r.fft_plan_from_stored_wisdom = m->synthesizer->plan_from_stored_wisdom();
 
   m->surge = surge_parameters(tug, tow, dampings, r.towline, line, options);
+  if (options.linear_non_surge_tension && options.non_surge_stiffness != CaseOptions::NonSurgeStiffness::kA10) {
+    const coupled::LinearLine eq = equivalent_line(*m);
+    m->surge.non_surge_stiffness_n_m = eq.stiffness_n_m;
+    m->surge.non_surge_damping_n_s_m = eq.damping_n_s_m;
+  }
   r.tug_mass_kg = m->surge.tug_mass_kg;
   r.tow_mass_kg = m->surge.tow_mass_kg;
   r.timings.hydrodynamics_s = seconds_since(t0);
@@ -427,23 +490,12 @@ std::array<DayStatistics, kLockstepDays> simulate_days(const CaseModel& m,
 double linear_tension_variance_n2(const CaseInputs& inputs, const CaseOptions& options) {
   const auto m = prepare_case(inputs, options);
   const auto& comps = m->synthesizer->plan().components();
-  const SurgeParameters& p = m->surge;
   const double k = m->fit->coefficients().a10(), c = m->fit->coefficients().a01();
-  const double c1 = p.cos_alpha_tug, c2 = p.cos_alpha_tow;
   double variance = 0.0;
   for (std::size_t j = 0; j < comps.size(); ++j) {
     const double w = comps[j].encounter_omega_rad_s;
     const Complex kc(k, w * c);
-    // EQ-SURGE-1..3 with tau = kc (c1 X1 - c2 X7 + xi_ns), harmonic at w.
-    const Complex a11 = -w * w * p.tug_mass_kg + Complex(0, w * p.tug_damping_n_s_m) + kc * c1 * c1;
-    const Complex a22 = -w * w * p.tow_mass_kg + Complex(0, w * p.tow_damping_n_s_m) + kc * c2 * c2;
-    const Complex a12 = -kc * c1 * c2;
-    const Complex b1 = m->h_f1_tug[j] - kc * c1 * m->h_xi_ns[j];
-    const Complex b2 = m->h_f1_tow[j] + kc * c2 * m->h_xi_ns[j];
-    const Complex det = a11 * a22 - a12 * a12;
-    const Complex x1 = (b1 * a22 - a12 * b2) / det;
-    const Complex x7 = (a11 * b2 - a12 * b1) / det;
-    const Complex tau = kc * (c1 * x1 - c2 * x7 + m->h_xi_ns[j]);
+    const Complex tau = kc * linear_extension(*m, j, w, k, c);
     variance += 0.5 * comps[j].amplitude_m * comps[j].amplitude_m * std::norm(tau);
   }
   return variance;

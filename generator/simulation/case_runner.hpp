@@ -98,6 +98,13 @@ struct CaseOptions {
   // linear tension (a10, a01 of the 12-DOF model's line) added to the
   // polynomial of the surge extension, instead of inside its argument.
   bool linear_non_surge_tension = false;
+  // With linear_non_surge_tension: which stiffness and damping carry the
+  // non-surge tension. kA10: the polynomial's linear terms (a10, a01);
+  // kEquivalentNonSurge / kEquivalentTotal: Gaussian equivalent linearisation
+  // (EQ-SURGE-7) over the non-surge extension alone, or over the whole
+  // first-order extension of the linear surge system (iterated to a fixed point).
+  enum class NonSurgeStiffness { kA10, kEquivalentNonSurge, kEquivalentTotal };
+  NonSurgeStiffness non_surge_stiffness = NonSurgeStiffness::kA10;
   // Diagnostic (issue 17), off: the wave-induced surge damping held at >= 0
   // per vessel (the thesis holds only its propeller damping positive).
   bool nonnegative_wave_damping = false;

@@ -101,8 +101,8 @@ struct SurgeParameters {
   //   tau = max(-T, P(xi_s, xi_s') + k_ns xi_ns + c_ns xi_ns'),
   //   xi_s = x_1 cos(alpha_1) - x_7 cos(alpha_2).
   bool linear_non_surge_tension = false;
-  double non_surge_stiffness_n_m = 0.0;   // k_ns (the 12-DOF model's a10)
-  double non_surge_damping_n_s_m = 0.0;   // c_ns (its a01)
+  double non_surge_stiffness_n_m = 0.0;   // k_ns (a10, or the equivalent line of case_runner EQ-SURGE-7)
+  double non_surge_damping_n_s_m = 0.0;   // c_ns (a01, or likewise)
 
   void validate() const;
 };

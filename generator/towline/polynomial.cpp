@@ -160,6 +160,12 @@ double first_harmonic_n(const PolynomialCoefficients& c, double amplitude_m, dou
   return std::hypot(in_phase, quadrature);
 }
 
+EquivalentLinearLine gaussian_equivalent_line(const PolynomialCoefficients& c, double xi_variance_m2,
+                                              double xi_dot_variance_m2_s2) {
+  const double s2 = xi_variance_m2, v2 = xi_dot_variance_m2_s2;
+  return {c.a10() + 3.0 * c.a30() * s2 + c.a12() * v2, c.a01() + c.a21() * s2 + 3.0 * c.a03() * v2};
+}
+
 void ExcitationOptions::validate() const {
   require_in_range("excitation.frequencies_rad_s count", static_cast<double>(frequencies_rad_s.size()),
                    2.0, 1000.0);

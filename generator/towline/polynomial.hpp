@@ -102,6 +102,20 @@ PolynomialFit fit_polynomial(const std::vector<TensionSample>& samples,
 // c = a01 A w + (1/4) a21 A^3 w + (3/4) a03 A^3 w^3 (the even terms have none).
 double first_harmonic_n(const PolynomialCoefficients& c, double amplitude_m, double omega_rad_s);
 
+// EQ-TOWLINE-18: the Gaussian equivalent linear line of the polynomial. For a
+// stationary zero-mean Gaussian extension with variances s2 of xi [m^2] and
+// v2 of xi_dot [m^2/s^2] (xi and xi_dot uncorrelated), the k, c minimising
+// E[(P - k xi - c xi_dot)^2] are k = E[dP/dxi], c = E[dP/dxi_dot]:
+//   k = a10 + 3 a30 s2 + a12 v2,  c = a01 + a21 s2 + 3 a03 v2
+// (the even terms have none). Caughey, J. Acoust. Soc. Am. 35 (1963);
+// Roberts & Spanos, Random Vibration and Statistical Linearization (1990) ch. 5.
+struct EquivalentLinearLine {
+  double stiffness_n_m = 0.0;
+  double damping_n_s_m = 0.0;
+};
+EquivalentLinearLine gaussian_equivalent_line(const PolynomialCoefficients& c, double xi_variance_m2,
+                                              double xi_dot_variance_m2_s2);
+
 // One prescribed extension p0(t) = amplitude sin(omega t).
 struct Excitation {
   double amplitude_m = 0.0;

@@ -136,6 +136,7 @@ simulation::CaseOptions case_options(const RunOptions& options) {
   o.response.added_resistance_aft_of_beam = options.added_resistance_aft_of_beam;
   o.signed_drift = options.signed_drift;
   o.linear_non_surge_tension = options.linear_non_surge_tension;
+  o.non_surge_stiffness = options.non_surge_stiffness;
   o.nonnegative_wave_damping = options.nonnegative_wave_damping;
   if (options.thesis_towline_fit) {
     o.towline.hold_static_stiffness = false;

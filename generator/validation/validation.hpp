@@ -79,6 +79,8 @@ struct RunOptions {
   bool signed_drift = false;
   // Diagnostic (issue 17): EQ-SURGE-6 (CaseOptions::linear_non_surge_tension).
   bool linear_non_surge_tension = false;
+  // With it: CaseOptions::non_surge_stiffness.
+  simulation::CaseOptions::NonSurgeStiffness non_surge_stiffness = simulation::CaseOptions::NonSurgeStiffness::kA10;
   // Diagnostic (issue 17): CaseOptions::nonnegative_wave_damping.
   bool nonnegative_wave_damping = false;
   void validate() const;

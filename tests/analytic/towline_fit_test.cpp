@@ -249,5 +249,35 @@ TEST(TowlineFit, FirstHarmonicMatchesTheFourierIntegral) {
   EXPECT_DOUBLE_EQ(first_harmonic_n(linear, 0.5, 0.1), 500.0);  // k A alone
 }
 
+// EVIDENCE-OF: EQ-TOWLINE-18
+// The Gaussian equivalent line is the least-squares linear fit of P over
+// independent zero-mean Gaussian xi and xi_dot: k = E[P xi] / E[xi^2],
+// c = E[P xi_dot] / E[xi_dot^2]. Both expectations by a 3-point Gauss-Hermite
+// rule per variable (nodes 0 and +/- sqrt(3) standard deviations, weights
+// 2/3, 1/6, 1/6: exact to degree 5, and P xi is of degree 4 in each).
+TEST(TowlineFit, GaussianEquivalentLineIsTheLeastSquaresLine) {
+  const PolynomialCoefficients p = manufactured();
+  const double nodes[3] = {0.0, std::sqrt(3.0), -std::sqrt(3.0)};
+  const double weights[3] = {2.0 / 3.0, 1.0 / 6.0, 1.0 / 6.0};
+  for (const auto& [s2, v2] : {std::pair{0.01, 0.0004}, std::pair{1.0, 0.25}, std::pair{9.0, 4.0}}) {
+    double px = 0.0, pv = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        const double x = nodes[i] * std::sqrt(s2), v = nodes[j] * std::sqrt(v2);
+        const double tau = p.evaluate_n(x, v);
+        px += weights[i] * weights[j] * tau * x;
+        pv += weights[i] * weights[j] * tau * v;
+      }
+    }
+    const EquivalentLinearLine eq = gaussian_equivalent_line(p, s2, v2);
+    EXPECT_REL_CLOSE(eq.stiffness_n_m, px / s2, 1e-12) << "s2 " << s2 << ", v2 " << v2;
+    EXPECT_REL_CLOSE(eq.damping_n_s_m, pv / v2, 1e-12) << "s2 " << s2 << ", v2 " << v2;
+  }
+  // Vanishing motion: the linear terms.
+  const EquivalentLinearLine small = gaussian_equivalent_line(p, 0.0, 0.0);
+  EXPECT_DOUBLE_EQ(small.stiffness_n_m, p.a10());
+  EXPECT_DOUBLE_EQ(small.damping_n_s_m, p.a01());
+}
+
 }  // namespace
 }  // namespace towdb::towline
