@@ -91,6 +91,7 @@ ordered_json case_json(const sweep::PlannedCase& p) {
   j["seed"] = s.seed;
   j["case_key"] = p.keys.case_key;
   j["state"] = sweep::to_string(p.state);
+  j["rekey"] = p.rekey;
   return j;
 }
 
@@ -101,10 +102,11 @@ int run_dry(const Context& ctx, const BuildArgs& a, const sweep::SweepFile& file
   if (!a.db.empty()) db = a.db;
   const std::vector<sweep::PlannedCase> plan = sweep::plan_build(db, exp.cases, catalog, kVersion);
   std::map<std::string, int> by_state;
-  int to_compute = 0;
+  int to_compute = 0, rekey = 0;
   for (const auto& p : plan) {
     ++by_state[sweep::to_string(p.state)];
     if (sweep::computes(p.state, false)) ++to_compute;
+    rekey += p.rekey ? 1 : 0;
   }
   // Whether a build here would be refused for computing with another machine
   // kind's numerics than the database's (sweep/build/numerics.hpp).
@@ -116,6 +118,7 @@ int run_dry(const Context& ctx, const BuildArgs& a, const sweep::SweepFile& file
     j["sweep_file"] = file.path;
     j["cases"] = plan.size();
     j["to_compute"] = to_compute;
+    j["to_rekey"] = rekey;
     j["by_state"] = by_state;
     j["numerics_fingerprint"] = {{"database", recorded ? ordered_json(*recorded) : ordered_json(nullptr)},
                                  {"this_machine", here},
@@ -141,7 +144,7 @@ int run_dry(const Context& ctx, const BuildArgs& a, const sweep::SweepFile& file
     if (s.speed_kt != s.nominal_speed_kt) speed += " (" + fmt(s.nominal_speed_kt) + ")";
     t.add_row({std::to_string(++n), s.sweep_label, s.tug, s.tow, speed, sweep::sea_text(s.sea), fmt(s.heading_deg),
                line_name(s.line), fmt(s.length_ft), fmt_grouped(s.mean_tension_lbf), s.mean_tension_label,
-               std::to_string(s.days), sweep::to_string(p.state)});
+               std::to_string(s.days), std::string(sweep::to_string(p.state)) + (p.rekey ? " (re-key)" : "")});
   }
   t.print(std::cout);
   for (const auto& s : exp.skipped) {
@@ -150,6 +153,7 @@ int run_dry(const Context& ctx, const BuildArgs& a, const sweep::SweepFile& file
   }
   std::cout << plan.size() << " cases (" << to_compute << " to compute";
   for (const auto& [state, count] : by_state) std::cout << ", " << count << " " << state;
+  if (rekey > 0) std::cout << "; " << rekey << " of them to re-key";
   std::cout << "); " << exp.skipped.size() << " conditions skipped\n";
   if (numerics_refusal) {
     std::cout << "note: " << db->string() << " records numerics fingerprint " << *recorded
@@ -215,6 +219,10 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
   }
   if (s.maxima_repacked > 0) {
     std::cout << "; the daily maxima of " << s.maxima_repacked << " cases repacked as binary16 (maxima_precision)";
+  }
+  if (s.rekeyed > 0) {
+    std::cout << "; " << s.rekeyed << " stored cases re-keyed (their ship or towline files changed in comments or "
+                 "layout only)";
   }
   std::cout << (s.interrupted ? "; interrupted (run again with the same command to continue)" : "") << "\n";
   return (s.failed > 0 || s.interrupted) ? 1 : 0;

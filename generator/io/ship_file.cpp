@@ -277,6 +277,27 @@ std::filesystem::path default_ships_dir() {
   return TOWDB_SOURCE_SHIPS_DIR;
 }
 
+bool same_toml_content(std::string_view a, std::string_view b) {
+  try {
+    return toml::parse(a) == toml::parse(b);
+  } catch (const toml::parse_error&) {
+    return false;
+  }
+}
+
+ShipCatalog ShipCatalog::with_content_hashes(const std::map<std::string, std::string>& sha256_by_name) const {
+  ShipCatalog copy = *this;
+  for (VesselFile& v : copy.vessels_) {
+    const auto it = sha256_by_name.find(v.vessel.name);
+    if (it != sha256_by_name.end()) v.vessel.content_sha256 = it->second;
+  }
+  for (TowlineFile& c : copy.components_) {
+    const auto it = sha256_by_name.find(c.component.name);
+    if (it != sha256_by_name.end()) c.component.content_sha256 = it->second;
+  }
+  return copy;
+}
+
 ShipCatalog ShipCatalog::load(const std::filesystem::path& ships_dir) {
   if (!std::filesystem::is_directory(ships_dir)) {
     throw InputError("ships directory '" + ships_dir.string() + "' " +

@@ -42,6 +42,11 @@ std::string normalize_name(std::string_view name);
 // Lower-case hex SHA-256 of bytes.
 std::string sha256_hex(std::string_view bytes);
 
+// Whether two ship or towline file texts hold the same TOML document: the same
+// tables, keys and values (comments, blank lines, layout and key order aside).
+// False when either text is not valid TOML.
+bool same_toml_content(std::string_view a, std::string_view b);
+
 // The default ships directory: $TOWDB_SHIPS_DIR, else <prefix>/share/towdb/ships
 // next to an installed executable, else the source tree's ships/.
 std::filesystem::path default_ships_dir();
@@ -67,6 +72,12 @@ class ShipCatalog {
   model::Towline towline(const model::Vessel& tug, model::LineKind hawser, double hawser_length_m) const;
 
   const std::filesystem::path& directory() const { return directory_; }
+
+  // A copy whose vessels and towline components named in `sha256_by_name`
+  // (canonical names) carry the given content_sha256 instead of their files':
+  // the hashes that the keys of cases computed from an earlier version of a
+  // file hold (sweep/build: re-keying cases when only comments changed).
+  ShipCatalog with_content_hashes(const std::map<std::string, std::string>& sha256_by_name) const;
 
  private:
   std::filesystem::path directory_;

@@ -68,7 +68,10 @@
 //     case_key      = SHA-256(inputs_sha256 | condition_key | code version)
 //     fit_key       = SHA-256(tug and tow file hashes | towline component
 //                     hashes | line | length | T | code version)
-//   A case is recomputed exactly when its case_key changes.
+//   A case is recomputed exactly when its case_key changes, except that a
+//   stored case whose key is reproduced with the stored hash of an earlier
+//   text of the same TOML document (comments or layout edited only) is
+//   re-keyed instead (sweep/build/rekey.hpp).
 // EQ-SWEEP-7  Determinism: case_id is assigned in sweep order when a case is
 //   registered, before any computation; fit_id = the first 60 bits of the
 //   fit_key read as an integer. Together with a deterministic runner this

@@ -6,6 +6,7 @@
 //   io-3.x bad input: each mutation of the valid file gives its own message
 //   io-4  towline component files: valid and invalid
 //   io-5  the bundled ships/ directory: every file loads, tugs find their lines
+//   io-6  same_toml_content: comments, layout and key order aside; values, types and bad TOML count
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -256,6 +257,16 @@ TEST(BundledShips, DuplicateVesselIsRejected) {
         << e.what();
   }
   std::filesystem::remove_all(dir);
+}
+
+TEST(SameTomlContent, IgnoresCommentsLayoutAndKeyOrderOnly) {  // io-6
+  const std::string a = "# header\nformat = \"x\"\n[hull]\nbeam_ft = 42.0\nname = \"A\"  # trailing\n";
+  EXPECT_TRUE(same_toml_content(a, a));
+  EXPECT_TRUE(same_toml_content(a, "format=\"x\"\n\n[hull]\n  name = \"A\"\n  beam_ft = 42.0\n"));
+  EXPECT_FALSE(same_toml_content(a, "format = \"x\"\n[hull]\nbeam_ft = 42.5\nname = \"A\"\n"));  // a value
+  EXPECT_FALSE(same_toml_content(a, "format = \"x\"\n[hull]\nbeam_ft = 42\nname = \"A\"\n"));    // a type
+  EXPECT_FALSE(same_toml_content(a, "format = \"x\"\n[hull]\nbeam_ft = 42.0\n"));                  // a key
+  EXPECT_FALSE(same_toml_content(a, "format = \"x\"\n[hull\n"));                                      // not TOML
 }
 
 }  // namespace

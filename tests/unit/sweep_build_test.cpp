@@ -5,8 +5,8 @@
 //                  numbers are the runner's SI values in the schema's units (kips, lbf, ft)
 //   sweep-build-2  1 thread and 2 threads give identical rows, bit for bit (EQ-SWEEP-7)
 //   sweep-build-3  incremental: a second build computes nothing; a new code version recomputes
-//                  everything; a changed ship file recomputes exactly the cases that use it,
-//                  replacing them in place (same case_id, EQ-SWEEP-5/6)
+//                  everything; a changed ship file (a value's text) recomputes exactly the cases
+//                  that use it, replacing them in place (same case_id, EQ-SWEEP-5/6)
 //   sweep-build-4  a failing case and a NaN-returning case are stored as 'failed' with their
 //                  reason; --retry-failed recomputes them
 //   sweep-build-5  dry-run plan: states new/done/changed; nothing is written
@@ -33,6 +33,10 @@
 //   sweep-build-16 schema 8, maxima_precision = "binary16": a build repacks the stored cases'
 //                  maxima and writes new cases as binary16, each maximum the binary16 of its
 //                  binary32 value; every other stored value is the same as with "binary32"
+//   sweep-build-17 ship and towline files edited in comments and layout only (rekey.hpp): the
+//                  stored cases are re-keyed, not recomputed, and the database then equals a fresh
+//                  build from the edited files (keys, fits, results, days); the dry run says so;
+//                  a value's edit in the same files is recomputed
 #include <sqlite3.h>
 #include <sys/file.h>
 #include <fcntl.h>
@@ -76,6 +80,30 @@ struct Fixture {
     return sweep::run_build(db, file, cases, catalog, runner, o);
   }
 };
+
+// Replaces the first `from` in a file by `to` (the test fails when absent).
+void replace_in_file(const fs::path& path, const std::string& from, const std::string& to) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  const std::size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " not in " << path;
+  text.replace(at, from.size(), to);
+  std::ofstream(path, std::ios::trunc) << text;
+}
+
+// The tables a case's computation fills (fits, cases, results, days), without
+// the provenance columns and the rows of the vessel and component files.
+std::string computed_tables(const fs::path& db) {
+  std::set<std::string> excluded = provenance_columns();
+  for (const char* c : {"cases.tug_vessel_id", "cases.tow_vessel_id", "cases.case_id", "results.case_id",
+                        "case_days.case_id"}) {
+    excluded.insert(c);
+  }
+  const std::string all = dump_database(db, excluded);
+  return all.substr(all.find("[towline_fits]"));
+}
 
 constexpr int kSmallSweepCases = 18;  // 1 tug x 2 tows x 2 headings x 2 towlines x 2 tensions + 2
 
@@ -181,11 +209,11 @@ TEST(SweepBuild, IncrementalRecomputesOnlyChangedCases) {  // sweep-build-3
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases"), kSmallSweepCases);  // replaced in place
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM results WHERE code_version = '99.0.0-test'"), kSmallSweepCases);
 
-  // A changed YRBM ship file (a comment added: new content hash) recomputes the
+  // A changed YRBM ship file (a value's text: new content) recomputes the
   // 8 YRBM cases only, with the same case_ids.
   const fs::path ships = f.dir / "ships";
   fs::copy(source_dir() / "ships", ships, fs::copy_options::recursive);
-  { std::ofstream(ships / "yrbm.toml", std::ios::app) << "\n# edited\n"; }
+  replace_in_file(ships / "yrbm.toml", "YRBM of about 650 LT", "YRBM of about 650 LT (edited)");
   const io::ShipCatalog edited = io::ShipCatalog::load(ships);
   const std::int64_t yrbm_ids_before =
       query_int(db, "SELECT sum(case_id) FROM cases WHERE tow_name = 'YRBM'");
@@ -604,6 +632,62 @@ TEST(SweepBuild, Binary16MaximaKeepEverythingElseAndRoundEachMaximumOnce) {  // 
   }
   std::set<std::string> provenance = provenance_columns();
   EXPECT_EQ(dump_database(db, provenance), dump_database(reference, provenance));
+}
+
+}  // namespace
+}  // namespace towdb::test
+
+namespace towdb::test {
+namespace {
+
+TEST(SweepBuild, CommentOnlyEditsReKeyInsteadOfRecomputing) {  // sweep-build-17
+  Fixture f;
+  const fs::path db = f.dir / "rekey.db";
+  f.build(db, 2, make_test_runner());
+  const std::int64_t fits_before = query_int(db, "SELECT count(*) FROM towline_fits");
+
+  // Comments, blank lines and spacing: the same TOML documents.
+  const fs::path ships = f.dir / "ships";
+  fs::copy(source_dir() / "ships", ships, fs::copy_options::recursive);
+  { std::ofstream(ships / "yrbm.toml", std::ios::app) << "\n\n# edited: a comment and blank lines\n"; }
+  replace_in_file(ships / "towlines/fiber-hawser.toml", "format = \"towdb-towline-1\"",
+                  "# the format line, commented\nformat    =    \"towdb-towline-1\"");
+  const io::ShipCatalog edited = io::ShipCatalog::load(ships);
+  ASSERT_NE(edited.vessel("YRBM").vessel.content_sha256, f.catalog.vessel("YRBM").vessel.content_sha256);
+
+  const std::vector<sweep::PlannedCase> plan = sweep::plan_build(db, f.cases, edited, kVersion);
+  int to_rekey = 0;
+  for (const auto& p : plan) {
+    to_rekey += p.rekey ? 1 : 0;
+    EXPECT_EQ(p.state, sweep::CaseState::kDone);
+  }
+  sweep::BuildOptions o;
+  o.threads = 2;
+  o.progress = false;
+  const sweep::BuildSummary s = sweep::run_build(db, f.file, f.cases, edited, make_test_runner(), o);
+  EXPECT_EQ(s.scheduled, 0);
+  EXPECT_EQ(s.rekeyed, to_rekey);
+  // Every case that uses an edited file: the YRBM's, and every fiber case (the hawser).
+  const std::int64_t expected =
+      query_int(db, "SELECT count(*) FROM cases WHERE tow_name = 'YRBM' OR line_type = 'fiber'");
+  EXPECT_EQ(s.rekeyed, expected);
+  EXPECT_GT(s.rekeyed, 0);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM towline_fits"), fits_before);  // moved, none left behind
+
+  // The re-keyed database holds what a fresh build from the edited files computes.
+  const fs::path fresh = f.dir / "fresh.db";
+  sweep::run_build(fresh, f.file, f.cases, edited, make_test_runner(), o);
+  EXPECT_EQ(computed_tables(db), computed_tables(fresh));
+  const sweep::BuildSummary again = sweep::run_build(db, f.file, f.cases, edited, make_test_runner(), o);
+  EXPECT_EQ(again.up_to_date, kSmallSweepCases);
+  EXPECT_EQ(again.rekeyed, 0);
+
+  // A value's text edited in the same file: its cases are recomputed.
+  replace_in_file(ships / "yrbm.toml", "YRBM of about 650 LT", "YRBM of about 650 LT (edited)");
+  const io::ShipCatalog changed = io::ShipCatalog::load(ships);
+  const sweep::BuildSummary recomputed = sweep::run_build(db, f.file, f.cases, changed, make_test_runner(), o);
+  EXPECT_EQ(recomputed.rekeyed, 0);
+  EXPECT_EQ(recomputed.scheduled, 8);
 }
 
 }  // namespace

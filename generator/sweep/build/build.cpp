@@ -196,8 +196,10 @@ std::string unfinished_build_refusal(const std::filesystem::path& path, std::int
 //     records (its results would differ in the last bits from what the first
 //     machine computes). A build with nothing to compute is not refused.
 //     Databases written before version 0.2.0 record none.
-void check_before_writing(const std::filesystem::path& path, const std::vector<CaseKeys>& keys, bool resume,
-                          bool retry_failed, const std::string& fingerprint) {
+void check_before_writing(const std::filesystem::path& path, const std::vector<CaseSpec>& cases,
+                          const std::vector<CaseKeys>& keys, const io::ShipCatalog& catalog,
+                          const BuildOptions& options, const std::string& fingerprint) {
+  const bool resume = options.resume, retry_failed = options.retry_failed;
   std::optional<store::Database> opened = open_for_checks(path);
   if (!opened) return;
   store::Database& db = *opened;
@@ -211,9 +213,15 @@ void check_before_writing(const std::filesystem::path& path, const std::vector<C
   if (!recorded || *recorded == fingerprint) return;
   const std::string& stored = *recorded;
   store::Statement by_key = db.prepare("SELECT status FROM cases WHERE case_key = ?");
-  for (const CaseKeys& k : keys) {
-    by_key.bind_blob(1, store::key_bytes(k.case_key, "case_key"));
-    const CaseState state = by_key.step() ? state_of_stored(by_key.column_text(0)) : CaseState::kNew;
+  EarlierShipFiles earlier(db, catalog, options.code_version);
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    by_key.bind_blob(1, store::key_bytes(keys[i].case_key, "case_key"));
+    CaseState state = CaseState::kNew;
+    if (by_key.step()) {
+      state = state_of_stored(by_key.column_text(0));
+    } else if (const std::optional<StoredCase> same = earlier.stored_case(cases[i])) {
+      state = state_of_stored(same->status);  // re-keyed, not recomputed
+    }
     by_key.reset();
     if (!computes(state, retry_failed)) continue;
     throw InputError(path.string() + ": meta." + kNumericsKey + " = " + stored +
@@ -259,10 +267,14 @@ std::vector<PlannedCase> plan_build(const std::optional<std::filesystem::path>& 
   store::Database db = store::Database::open(*db_path, store::Database::Mode::kReadOnly);
   store::Statement by_key = db.prepare("SELECT status FROM cases WHERE case_key = ?");
   store::Statement by_condition = db.prepare("SELECT 1 FROM cases WHERE condition_key = ?");
+  EarlierShipFiles earlier(db, catalog, code_version);
   for (PlannedCase& p : plan) {
     by_key.bind_blob(1, store::key_bytes(p.keys.case_key, "case_key"));
     if (by_key.step()) {
       p.state = state_of_stored(by_key.column_text(0));
+    } else if (const std::optional<StoredCase> stored = earlier.stored_case(p.spec)) {
+      p.state = state_of_stored(stored->status);
+      p.rekey = true;
     } else {
       by_condition.bind_blob(1, store::key_bytes(p.spec.condition_key, "condition_key"));
       if (by_condition.step()) p.state = CaseState::kChanged;
@@ -338,7 +350,7 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
   std::vector<std::size_t> work;
   try {
     lock.emplace(db_path);
-    check_before_writing(db_path, keys, options.resume, options.retry_failed, numerics_fingerprint());
+    check_before_writing(db_path, cases, keys, catalog, options, numerics_fingerprint());
     db.emplace(store::Database::open(db_path, store::Database::Mode::kCreate));
     writer.emplace(*db);
     const std::vector<std::int64_t> unfinished = writer->unfinished_builds();
@@ -366,7 +378,9 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
   }
 
   try {
-    registered = writer->register_cases(cases, keys, catalog, summary.build_id, options.retry_failed);
+    EarlierShipFiles earlier(*db, catalog, options.code_version);
+    registered = writer->register_cases(cases, keys, catalog, summary.build_id, options.retry_failed, &earlier);
+    for (const RegisteredCase& r : registered) summary.rekeyed += r.rekeyed ? 1 : 0;
     summary.lowest_points_filled =
         fill_lowest_points(*writer, cases, keys, registered, catalog, options.lowest_elevation_m);
     writer->set_day_records(sweep.day_records);

@@ -74,6 +74,7 @@ struct BuildSummary {
   bool worker = false;        // an MPI worker rank: computed, wrote nothing
   int lowest_points_filled = 0;  // fits stored before schema 6 given their lowest point
   int maxima_repacked = 0;       // cases whose daily maxima were repacked as binary16 (maxima_precision)
+  int rekeyed = 0;  // stored cases moved to new keys: their files changed in comments or layout only (rekey.hpp)
   int slack_snatch_dropped = 0;  // cases whose per-day slack and snatch were dropped (day_records = "maxima")
   std::vector<std::string> failures;  // "case_id N (label): reason", this run
 };
@@ -98,6 +99,7 @@ struct PlannedCase {
   CaseSpec spec;
   CaseKeys keys;
   CaseState state = CaseState::kNew;
+  bool rekey = false;  // a stored case under earlier same-TOML file versions (rekey.hpp): re-keyed, not recomputed
 };
 std::vector<PlannedCase> plan_build(const std::optional<std::filesystem::path>& db_path,
                                     const std::vector<CaseSpec>& cases, const io::ShipCatalog& catalog,

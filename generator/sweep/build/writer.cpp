@@ -215,7 +215,7 @@ void DatabaseWriter::register_component(const model::TowlineComponent& c) {
 std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<CaseSpec>& specs,
                                                            const std::vector<CaseKeys>& keys,
                                                            const io::ShipCatalog& catalog, std::int64_t build_id,
-                                                           bool retry_failed) {
+                                                           bool retry_failed, EarlierShipFiles* earlier) {
   TOWDB_ASSERT(specs.size() == keys.size());
   std::vector<RegisteredCase> out(specs.size());
   db_.transaction([&] {
@@ -249,6 +249,7 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
     store::Statement to_pending = db_.prepare(
         "UPDATE cases SET status = 'pending', error_message = NULL, build_id = ?, updated_utc = ? WHERE case_id = ?");
 
+    std::vector<std::int64_t> moved_fits;
     for (std::size_t i = 0; i < specs.size(); ++i) {
       const CaseSpec& s = specs[i];
       const CaseKeys& k = keys[i];
@@ -274,6 +275,18 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
         continue;
       }
       by_key.reset();
+      if (earlier != nullptr && !earlier->empty()) {
+        if (const std::optional<StoredCase> stored = earlier->stored_case(s)) {
+          earlier->rekey(*stored, k, tug_id, tow_id, now);
+          if (stored->fit_id && *stored->fit_id != k.fit_id) moved_fits.push_back(*stored->fit_id);
+          out[i] = {stored->case_id, state_of_stored(stored->status), true};
+          if (computes(out[i].state, retry_failed)) {
+            to_pending.bind(1, build_id).bind(2, now).bind(3, stored->case_id);
+            to_pending.run();
+          }
+          continue;
+        }
+      }
       by_condition.bind_blob(1, store::key_bytes(s.condition_key, "condition_key"));
       if (by_condition.step()) {
         const std::int64_t id = by_condition.column_int(0);
@@ -294,6 +307,7 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
       insert.run();
       out[i] = {db_.last_insert_rowid(), CaseState::kNew};
     }
+    drop_unused_fits(db_, moved_fits);
   });
   return out;
 }

@@ -14,6 +14,7 @@
 
 #include "io/ship_file.hpp"
 #include "store/database.hpp"
+#include "sweep/build/rekey.hpp"
 #include "sweep/spec/case.hpp"
 #include "sweep/spec/keys.hpp"
 #include "sweep/spec/sweep_file.hpp"
@@ -52,6 +53,7 @@ bool computes(CaseState state, bool retry_failed);
 struct RegisteredCase {
   std::int64_t case_id = 0;
   CaseState state = CaseState::kNew;
+  bool rekeyed = false;  // a stored case moved to its current keys (rekey.hpp)
 };
 
 struct FitWithoutLowestPoint {
@@ -77,10 +79,12 @@ class DatabaseWriter {
 
   // Inserts the vessels, towline components and cases of a sweep (one
   // transaction; case_id in sweep order, EQ-SWEEP-7). `retry_failed` resets
-  // failed cases to pending.
+  // failed cases to pending. With `earlier`, a case that is a stored case
+  // under earlier same-TOML versions of its files is moved to its current keys
+  // (rekey.hpp) and keeps its state.
   std::vector<RegisteredCase> register_cases(const std::vector<CaseSpec>& specs, const std::vector<CaseKeys>& keys,
                                              const io::ShipCatalog& catalog, std::int64_t build_id,
-                                             bool retry_failed);
+                                             bool retry_failed, EarlierShipFiles* earlier = nullptr);
 
   // What write_result keeps of each day (the sweep file's day_records).
   void set_day_records(DayRecords records) { day_records_ = records; }
