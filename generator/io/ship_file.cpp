@@ -4,8 +4,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include <openssl/evp.h>
 #include <unistd.h>
@@ -13,6 +11,7 @@
 #include "common/constants.hpp"
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "io/file_bytes.hpp"
 #include "model/hull_form.hpp"
 
 namespace towdb::io {
@@ -26,14 +25,6 @@ constexpr double kBlockCoefficientAbsTol = 0.02;
 // The station table is a generated or digitised approximation of the hull:
 // its volume integral may differ from the displacement by up to 5 %.
 constexpr double kStationVolumeRelTol = 0.05;
-
-std::string read_text_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot open the file (missing or unreadable)");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
 
 void check_format(StrictTable& top, const std::string& expected) {
   top.string("format", {expected});
@@ -259,11 +250,11 @@ TowlineFile parse_towline_component(std::string_view text, const std::string& pa
 }
 
 VesselFile load_vessel(const std::filesystem::path& path) {
-  return parse_vessel(read_text_file(path), path.string());
+  return parse_vessel(read_file_bytes(path), path.string());
 }
 
 TowlineFile load_towline_component(const std::filesystem::path& path) {
-  return parse_towline_component(read_text_file(path), path.string());
+  return parse_towline_component(read_file_bytes(path), path.string());
 }
 
 std::filesystem::path default_ships_dir() {

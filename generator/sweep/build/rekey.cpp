@@ -1,23 +1,14 @@
 #include "sweep/build/rekey.hpp"
 
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "common/error.hpp"
+#include "io/file_bytes.hpp"
 #include "store/key_bytes.hpp"
 
 namespace towdb::sweep {
 
 namespace {
-
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot read the file to compare it with the stored versions");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
 
 // The latest stored version of `name` in `table` (vessels or
 // towline_components, newest row first) that is not `current_sha256` and holds
@@ -53,14 +44,14 @@ EarlierShipFiles::EarlierShipFiles(store::Database& db, const io::ShipCatalog& c
     const std::string sha = earlier_same_toml(
         db, "SELECT content_sha256, file_text FROM vessels WHERE name = ? AND content_sha256 <> ? "
             "ORDER BY vessel_id DESC",
-        v.vessel.name, v.vessel.content_sha256, file_text(v.vessel.source_path));
+        v.vessel.name, v.vessel.content_sha256, io::read_file_bytes(v.vessel.source_path));
     if (!sha.empty()) hashes_.emplace(v.vessel.name, sha);
   }
   for (const io::TowlineFile& c : catalog.components()) {
     const std::string sha = earlier_same_toml(
         db, "SELECT content_sha256, file_text FROM towline_components WHERE name = ? AND content_sha256 <> ? "
             "ORDER BY component_id DESC",
-        c.component.name, c.component.content_sha256, file_text(c.component.source_path));
+        c.component.name, c.component.content_sha256, io::read_file_bytes(c.component.source_path));
     if (!sha.empty()) hashes_.emplace(c.component.name, sha);
   }
   if (!hashes_.empty()) earlier_catalog_ = catalog.with_content_hashes(hashes_);

@@ -3,25 +3,16 @@
 #include <ctime>
 #include <map>
 #include <set>
-#include <fstream>
-#include <sstream>
 
 #include "common/error.hpp"
 #include "common/units.hpp"
+#include "io/file_bytes.hpp"
 #include "store/key_bytes.hpp"
 #include "store/packed_days.hpp"
 
 namespace towdb::sweep {
 
 namespace {
-
-std::string read_file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot read the file to store it in the database");
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
 
 const char* role_text(model::VesselRole role) { return role == model::VesselRole::kTug ? "tug" : "tow"; }
 
@@ -184,7 +175,7 @@ std::int64_t DatabaseWriter::register_vessel(const io::VesselFile& vf) {
     find.bind(1, v.name).bind(2, v.content_sha256);
     if (find.step()) return find.column_int(0);
   }
-  const std::string text = read_file_bytes(v.source_path);
+  const std::string text = io::read_file_bytes(v.source_path);
   if (io::sha256_hex(text) != v.content_sha256) {
     throw InputError(v.source_path + ": the ship file changed while the build was starting; run it again");
   }
@@ -202,7 +193,7 @@ void DatabaseWriter::register_component(const model::TowlineComponent& c) {
     find.bind(1, c.name).bind(2, c.content_sha256);
     if (find.step()) return;
   }
-  const std::string text = read_file_bytes(c.source_path);
+  const std::string text = io::read_file_bytes(c.source_path);
   if (io::sha256_hex(text) != c.content_sha256) {
     throw InputError(c.source_path + ": the towline file changed while the build was starting; run it again");
   }
