@@ -228,10 +228,8 @@ DayStatistics simulate_day(const CaseModel& model, const DayForcing& forcing, co
 
 // Days run_case integrates together (surge.hpp integrate_days_fastest): one
 // 4-double AVX register where the processor has AVX2, else two 2-double
-// vectors. Measured on the 2-core CI machine with the 2-double vectors
-// (bench/): integration alone costs 4.0 ms a day with 2 days, 2.55 with 4 and
-// 2.35 with 8, but a 500-day case is fastest with 4 (eight days' records no
-// longer stay in cache).
+// vectors. Four: a whole case is fastest with four (eight days' records no
+// longer stay in cache; docs/performance.md, "The chain, stage by stage").
 inline constexpr std::size_t kLockstepDays = 4;
 // kLockstepDays days of a prepared case in lock step (their records
 // interleaved), with the vectors `isa` names; day l's statistics equal

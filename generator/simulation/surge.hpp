@@ -19,12 +19,8 @@
 //               below the running maximum are skipped (kPeakGateFraction).
 //               Sampling tau only at the steps would read a peak of
 //               frequency w low by up to 1 - cos(w h / 2) (3.1 % at
-//               w = 0.5 rad/s, h = 1 s). Measured on 100 days of the T-ATF /
-//               FFG 7 case of thesis Fig. 6-1 (2,000 ft wire, following
-//               seas): the daily-maximum mean at h = 1 s was 1.3 % below
-//               that at h = 0.25 s, 0.11 % with this rule; in beam seas with
-//               encounter frequencies up to the 3 rad/s cutoff (1,000 ft
-//               wire, 30 kt, 6 kt) 2.6 %, and 1.1 % with it.
+//               w = 0.5 rad/s, h = 1 s); the rule's measured effect is in
+//               docs/performance.md ("The daily maximum between steps").
 //   EQ-SURGE-6  (diagnostic, SurgeParameters::linear_non_surge_tension)
 //               tau = max(-T, P(xi_s, xi_s') + k_ns xi_ns + c_ns xi_ns'),
 //               xi_s the surge part of EQ-SURGE-3: the non-surge tension
