@@ -54,11 +54,6 @@ std::filesystem::path source_dir() {
   return std::filesystem::current_path();
 }
 
-std::filesystem::path shared_dir() {
-  const auto p = source_dir().parent_path() / "shared";
-  return std::filesystem::exists(p) ? p : std::filesystem::path{};
-}
-
 std::filesystem::path towdb_exe() {
   if (const char* s = std::getenv("TOWDB_EXE")) return s;
   return {};

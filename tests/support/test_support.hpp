@@ -25,8 +25,6 @@ struct AbsTol {
 
 // The project source root (tests run from it; TOWDB_SOURCE_DIR overrides).
 std::filesystem::path source_dir();
-// ../shared beside the project, or "" when absent.
-std::filesystem::path shared_dir();
 // The towdb executable under test (TOWDB_EXE), or "" when not set.
 std::filesystem::path towdb_exe();
 // A fresh, empty temporary directory for one test, removed by the caller.
