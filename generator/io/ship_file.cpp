@@ -276,15 +276,16 @@ bool same_toml_content(std::string_view a, std::string_view b) {
   }
 }
 
-ShipCatalog ShipCatalog::with_content_hashes(const std::map<std::string, std::string>& sha256_by_name) const {
+ShipCatalog ShipCatalog::with_content_hashes(const std::map<std::string, std::string>& vessel_sha256,
+                                             const std::map<std::string, std::string>& component_sha256) const {
   ShipCatalog copy = *this;
   for (VesselFile& v : copy.vessels_) {
-    const auto it = sha256_by_name.find(v.vessel.name);
-    if (it != sha256_by_name.end()) v.vessel.content_sha256 = it->second;
+    const auto it = vessel_sha256.find(v.vessel.name);
+    if (it != vessel_sha256.end()) v.vessel.content_sha256 = it->second;
   }
   for (TowlineFile& c : copy.components_) {
-    const auto it = sha256_by_name.find(c.component.name);
-    if (it != sha256_by_name.end()) c.component.content_sha256 = it->second;
+    const auto it = component_sha256.find(c.component.name);
+    if (it != component_sha256.end()) c.component.content_sha256 = it->second;
   }
   return copy;
 }

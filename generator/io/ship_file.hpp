@@ -73,11 +73,12 @@ class ShipCatalog {
 
   const std::filesystem::path& directory() const { return directory_; }
 
-  // A copy whose vessels and towline components named in `sha256_by_name`
-  // (canonical names) carry the given content_sha256 instead of their files':
+  // A copy whose vessels and towline components named in the maps (canonical
+  // name -> SHA-256) carry the given content_sha256 instead of their files':
   // the hashes that the keys of cases computed from an earlier version of a
-  // file hold (sweep/build: re-keying cases when only comments changed).
-  ShipCatalog with_content_hashes(const std::map<std::string, std::string>& sha256_by_name) const;
+  // file hold (sweep/build/rekey.hpp: re-keying cases when only comments changed).
+  ShipCatalog with_content_hashes(const std::map<std::string, std::string>& vessel_sha256,
+                                  const std::map<std::string, std::string>& component_sha256) const;
 
  private:
   std::filesystem::path directory_;

@@ -45,16 +45,16 @@ EarlierShipFiles::EarlierShipFiles(store::Database& db, const io::ShipCatalog& c
         db, "SELECT content_sha256, file_text FROM vessels WHERE name = ? AND content_sha256 <> ? "
             "ORDER BY vessel_id DESC",
         v.vessel.name, v.vessel.content_sha256, io::read_file_bytes(v.vessel.source_path));
-    if (!sha.empty()) hashes_.emplace(v.vessel.name, sha);
+    if (!sha.empty()) vessel_hashes_.emplace(v.vessel.name, sha);
   }
   for (const io::TowlineFile& c : catalog.components()) {
     const std::string sha = earlier_same_toml(
         db, "SELECT content_sha256, file_text FROM towline_components WHERE name = ? AND content_sha256 <> ? "
             "ORDER BY component_id DESC",
         c.component.name, c.component.content_sha256, io::read_file_bytes(c.component.source_path));
-    if (!sha.empty()) hashes_.emplace(c.component.name, sha);
+    if (!sha.empty()) component_hashes_.emplace(c.component.name, sha);
   }
-  if (!hashes_.empty()) earlier_catalog_ = catalog.with_content_hashes(hashes_);
+  if (!empty()) earlier_catalog_ = catalog.with_content_hashes(vessel_hashes_, component_hashes_);
 }
 
 std::optional<StoredCase> EarlierShipFiles::stored_case(const CaseSpec& spec) {

@@ -45,9 +45,7 @@ class EarlierShipFiles {
   EarlierShipFiles(store::Database& db, const io::ShipCatalog& catalog, const std::string& code_version);
 
   // No file of the catalog changed in layout only: nothing to re-key.
-  bool empty() const { return hashes_.empty(); }
-  // Canonical name -> the stored content_sha256 of its earlier, same-TOML text.
-  const std::map<std::string, std::string>& earlier_hashes() const { return hashes_; }
+  bool empty() const { return vessel_hashes_.empty() && component_hashes_.empty(); }
   // The stored case `spec` is under the earlier texts, if any.
   std::optional<StoredCase> stored_case(const CaseSpec& spec);
   // Moves a stored case to its current keys and vessel rows, and its towline
@@ -59,7 +57,8 @@ class EarlierShipFiles {
  private:
   store::Database& db_;
   std::string code_version_;
-  std::map<std::string, std::string> hashes_;
+  // Canonical name -> the stored content_sha256 of its earlier, same-TOML text.
+  std::map<std::string, std::string> vessel_hashes_, component_hashes_;
   std::optional<io::ShipCatalog> earlier_catalog_;
   std::string fit_columns_;  // towline_fits' value columns (read at the first rekey)
 };
