@@ -287,10 +287,6 @@ SurgeParameters surge_parameters(const model::Vessel& tug, const model::Vessel& 
   return p;
 }
 
-}  // namespace
-
-namespace {
-
 // The first-order extension of component j per unit wave amplitude: EQ-SURGE-1..3
 // with the linear line tau = (k + i w c) xi, harmonic at the encounter frequency w.
 Complex linear_extension(const CaseModel& m, std::size_t j, double w, double k, double c) {

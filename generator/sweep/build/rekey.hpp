@@ -60,7 +60,8 @@ class EarlierShipFiles {
   // Canonical name -> the stored content_sha256 of its earlier, same-TOML text.
   std::map<std::string, std::string> vessel_hashes_, component_hashes_;
   std::optional<io::ShipCatalog> earlier_catalog_;
-  std::string fit_columns_;  // towline_fits' value columns (read at the first rekey)
+  // Statements prepared at first use (one registration asks for every case).
+  std::optional<store::Statement> by_key_, copy_fit_, update_case_;
 };
 
 // Deletes the fits among `fit_ids` that no case refers to any more.

@@ -168,6 +168,17 @@ void DatabaseWriter::finish_build(std::int64_t build_id, const std::string& stat
   });
 }
 
+bool fit_is_stored(store::Database& db, std::int64_t fit_id, const std::string& fit_key) {
+  store::Statement find = db.prepare("SELECT fit_key FROM towline_fits WHERE fit_id = ?");
+  find.bind(1, fit_id);
+  if (!find.step()) return false;
+  if (find.column_text(0) != fit_key) {
+    throw StorageError("towline_fits: fit_id " + std::to_string(fit_id) + " of key " + fit_key + " is taken by key " +
+                       find.column_text(0) + " (60-bit id collision)");
+  }
+  return true;
+}
+
 std::int64_t DatabaseWriter::register_vessel(const io::VesselFile& vf) {
   const model::Vessel& v = vf.vessel;
   {
@@ -240,6 +251,14 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
     store::Statement to_pending = db_.prepare(
         "UPDATE cases SET status = 'pending', error_message = NULL, build_id = ?, updated_utc = ? WHERE case_id = ?");
 
+    // A stored case stays: its state, and pending again when this build computes it.
+    auto keep = [&](std::size_t i, std::int64_t id, const std::string& status, bool rekeyed) {
+      out[i] = {id, state_of_stored(status), rekeyed};
+      if (computes(out[i].state, retry_failed)) {
+        to_pending.bind(1, build_id).bind(2, now).bind(3, id);
+        to_pending.run();
+      }
+    };
     std::vector<std::int64_t> moved_fits;
     for (std::size_t i = 0; i < specs.size(); ++i) {
       const CaseSpec& s = specs[i];
@@ -257,12 +276,7 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
         const std::int64_t id = by_key.column_int(0);
         const std::string status = by_key.column_text(1);
         by_key.reset();
-        out[i].case_id = id;
-        out[i].state = state_of_stored(status);
-        if (computes(out[i].state, retry_failed)) {
-          to_pending.bind(1, build_id).bind(2, now).bind(3, id);
-          to_pending.run();
-        }
+        keep(i, id, status, false);
         continue;
       }
       by_key.reset();
@@ -270,11 +284,7 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
         if (const std::optional<StoredCase> stored = earlier->stored_case(s)) {
           earlier->rekey(*stored, k, tug_id, tow_id, now);
           if (stored->fit_id && *stored->fit_id != k.fit_id) moved_fits.push_back(*stored->fit_id);
-          out[i] = {stored->case_id, state_of_stored(stored->status), true};
-          if (computes(out[i].state, retry_failed)) {
-            to_pending.bind(1, build_id).bind(2, now).bind(3, stored->case_id);
-            to_pending.run();
-          }
+          keep(i, stored->case_id, stored->status, true);
           continue;
         }
       }
@@ -323,14 +333,7 @@ void DatabaseWriter::write_result(std::int64_t case_id, const CaseSpec& spec, co
   db_.transaction([&] {
     // The fit (shared by every case with the same fit_key; EQ-SWEEP-7 id).
     {
-      store::Statement find = db_.prepare("SELECT fit_key FROM towline_fits WHERE fit_id = ?");
-      find.bind(1, keys.fit_id);
-      if (find.step()) {
-        if (find.column_text(0) != keys.fit_key) {
-          throw StorageError("towline_fits: fit_id " + std::to_string(keys.fit_id) + " of key " + keys.fit_key +
-                             " is taken by key " + find.column_text(0) + " (60-bit id collision)");
-        }
-      } else {
+      if (!fit_is_stored(db_, keys.fit_id, keys.fit_key)) {
         const TowlineFitOutcome& f = outcome.fit;
         store::Statement st = db_.prepare(
             "INSERT INTO towline_fits (fit_id, fit_key, tug_name, line_type, length_ft, mean_tension_lbf, "

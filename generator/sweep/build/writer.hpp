@@ -61,6 +61,10 @@ struct FitWithoutLowestPoint {
   std::int64_t case_id = 0;  // a finished case that uses it
 };
 
+// Whether towline_fits holds the fit of `fit_key` under its EQ-SWEEP-7 id;
+// StorageError when another key holds that id (a 60-bit id collision).
+bool fit_is_stored(store::Database& db, std::int64_t fit_id, const std::string& fit_key);
+
 class DatabaseWriter {
  public:
   explicit DatabaseWriter(store::Database& db) : db_(db) {}
