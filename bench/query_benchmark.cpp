@@ -1,7 +1,8 @@
 // Query throughput (Google Benchmark): interpolated queries per second through
 // the C API on one core. Target (issue "Query engine for tow planners"):
 // >= 100,000 queries/s. The database is synthetic, thesis-sized: 4 speeds x
-// 3 winds x 7 headings x 4 lengths x 2-4 mean tensions = 1008 cases, with
+// 3 winds x 7 headings x 4 lengths x 2-4 mean tensions = 1008 cases (with and
+// without heading profiles), with
 // Gumbel parameters from exp(linear) functions (tests/query/synthetic_db.hpp).
 // The sum of the answers is printed as a counter ("checksum") so that two
 // builds can be compared for identical results (after SQLite's speedtest1).
@@ -27,9 +28,12 @@ struct Fixture {
 
   // relative: every case stores its node's calculated mean tension and the
   // questions ask at the default, factor 1 of it (query.h EQ-QUERY-9).
-  explicit Fixture(bool relative) {
+  // profiles: every line also has a heading profile (EQ-QUERY-11), as in the
+  // bundled database.
+  Fixture(bool relative, bool profiles) {
     path = std::filesystem::temp_directory_path() /
-           ("towdb-bench-" + std::to_string(::getpid()) + (relative ? "-relative" : "") + ".towdb");
+           ("towdb-bench-" + std::to_string(::getpid()) + (relative ? "-relative" : "") +
+            (profiles ? "-profiles" : "") + ".towdb");
     std::filesystem::remove(path);
     towdb::test::GridSpec g;
     g.headings_deg = {0.0, 30.0, 60.0, 90.0, 120.0, 150.0, 180.0};
@@ -40,6 +44,11 @@ struct Fixture {
     g.beta_kips = [](double, double w, double, double, double m) { return 8.0 * std::exp(0.02 * w + 3e-6 * m); };
     g.store_calculated = relative;
     towdb::test::write_synthetic_db(path, towdb::test::grid_cases(g));
+    if (profiles) {
+      std::vector<double> sigma;
+      for (int j = 0; j < 73; ++j) sigma.push_back(10.0 - 8.0 * std::cos((2.5 * j - 84.0) * 3.14159265358979 / 30.0));
+      towdb::test::write_heading_profiles(path, sigma);
+    }
     if (towdb_query_open(path.c_str(), TOWDB_QUERY_SPACE_AUTO, &db) != TOWDB_QUERY_OK) std::abort();
     std::mt19937 rng(2024);
     std::uniform_real_distribution<double> us(3.0, 9.0), uw(20.0, 35.0), uh(0.0, 360.0), ul(800.0, 2000.0);
@@ -64,16 +73,19 @@ struct Fixture {
   }
 };
 
-Fixture& fixture(bool relative) {
-  static Fixture absolute_fixture(false);
-  static Fixture relative_fixture(true);
-  return relative ? relative_fixture : absolute_fixture;
+// kind: 0 absolute mean-tension axis at a given tension, 1 the relative axis
+// (EQ-QUERY-9) at the default calculated tension, 2 the same with heading
+// profiles (EQ-QUERY-11).
+Fixture& fixture(int kind) {
+  static Fixture absolute_fixture(false, false);
+  static Fixture relative_fixture(true, false);
+  static Fixture profiles_fixture(true, true);
+  return kind == 0 ? absolute_fixture : kind == 1 ? relative_fixture : profiles_fixture;
 }
 
-// state.range(0): 0 absolute mean-tension axis at a given tension, 1 the
-// relative axis (EQ-QUERY-9) at the default calculated tension.
+// state.range(0): the fixture's kind (above).
 void BM_InterpolatedQuery(benchmark::State& state) {
-  Fixture& f = fixture(state.range(0) != 0);
+  Fixture& f = fixture(static_cast<int>(state.range(0)));
   towdb_query_result res;
   std::size_t i = 0;
   double checksum = 0.0;
@@ -86,10 +98,10 @@ void BM_InterpolatedQuery(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
   state.counters["checksum"] = checksum / static_cast<double>(state.iterations());
 }
-BENCHMARK(BM_InterpolatedQuery)->Arg(0)->Arg(1);
+BENCHMARK(BM_InterpolatedQuery)->Arg(0)->Arg(1)->Arg(2);
 
 void BM_OpenDatabase(benchmark::State& state) {
-  Fixture& f = fixture(false);
+  Fixture& f = fixture(0);
   for (auto _ : state) {
     towdb_query_db* db = nullptr;
     if (towdb_query_open(f.path.c_str(), TOWDB_QUERY_SPACE_AUTO, &db) != TOWDB_QUERY_OK) state.SkipWithError("open");

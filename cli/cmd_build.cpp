@@ -197,11 +197,13 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
   o.coverage_notes = exp.notes;
   o.skipped = exp.skipped;
   o.lowest_elevation_m = sweep::static_lowest_elevation(build_case_options());
+  o.heading_profile = sweep::linear_heading_profile(build_case_options());
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
   const sweep::BuildSummary s = sweep::run_build(a.db, file, exp.cases, catalog, *runner, o);
   if (s.worker) return 0;
   for (const auto& f : s.failures) std::cerr << "towdb: case failed: " << f << "\n";
+  for (const auto& f : s.profiles.failures) std::cerr << "towdb: heading profile failed: " << f << "\n";
   for (const auto& k : exp.skipped) {
     std::cerr << "towdb: condition skipped: " << k.sweep_label << " " << k.tug << " / " << k.tow << " at "
               << fmt(k.nominal_speed_kt) << " kt, " << k.sea << ", heading " << fmt(k.heading_deg)
@@ -223,6 +225,10 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
   if (s.rekeyed > 0) {
     std::cout << "; " << s.rekeyed << " stored cases re-keyed (their ship or towline files changed in comments or "
                  "layout only)";
+  }
+  if (s.profiles.lines > 0) {
+    std::cout << "; heading profiles: " << s.profiles.lines << " lines, " << s.profiles.up_to_date << " up to date, "
+              << s.profiles.computed << " computed, " << s.profiles.failed << " failed";
   }
   std::cout << (s.interrupted ? "; interrupted (run again with the same command to continue)" : "") << "\n";
   return (s.failed > 0 || s.interrupted) ? 1 : 0;
@@ -272,6 +278,8 @@ int run_status(const std::string& db, bool json) {
     j["results"] = r.results;
     j["daily_maxima"] = r.daily_maxima;
     j["towline_fits"] = r.towline_fits;
+    j["heading_profiles"] = r.heading_profiles;
+    j["cases_with_heading_profile"] = r.cases_with_profile;
     j["vessels"] = r.vessels;
     if (r.total_runtime_s) j["total_runtime_s"] = *r.total_runtime_s;
     j["builds"] = ordered_json::array();
@@ -295,7 +303,9 @@ int run_status(const std::string& db, bool json) {
             << "cases: " << r.cases;
   for (const auto& [status, n] : r.cases_by_status) std::cout << ", " << n << " " << status;
   std::cout << "\nresults: " << r.results << ", daily maxima: " << r.daily_maxima
-            << ", towline fits: " << r.towline_fits << ", vessels: " << r.vessels;
+            << ", towline fits: " << r.towline_fits << ", vessels: " << r.vessels
+            << "\nheading profiles (query EQ-QUERY-11): " << r.heading_profiles << ", used by " << r.cases_with_profile
+            << " cases";
   if (r.total_runtime_s) std::cout << ", computing time: " << fmt(*r.total_runtime_s / 3600.0, 2) << " h";
   std::cout << "\n\nsweep labels\n";
   TextTable labels({"sweep label", "cases"});

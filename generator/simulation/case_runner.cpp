@@ -497,6 +497,22 @@ double linear_tension_variance_n2(const CaseInputs& inputs, const CaseOptions& o
   return variance;
 }
 
+std::vector<double> linear_tension_sigma_by_heading_n(const CaseInputs& inputs, const CaseOptions& options,
+                                                       const std::vector<double>& headings_deg) {
+  if (inputs.sea.systems.size() != 1) {
+    throw InputError("linear heading profile: the sea has " + std::to_string(inputs.sea.systems.size()) +
+                     " wave systems; allowed: one (a heading profile turns one system)");
+  }
+  CaseInputs at = inputs;
+  std::vector<double> sigma;
+  sigma.reserve(headings_deg.size());
+  for (double h : headings_deg) {
+    at.sea.systems[0].heading_rad = units::deg_to_rad(h);
+    sigma.push_back(std::sqrt(linear_tension_variance_n2(at, options)));
+  }
+  return sigma;
+}
+
 CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options) {
   const auto start = Clock::now();
   const auto m = prepare_case(inputs, options);

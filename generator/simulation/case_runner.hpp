@@ -217,6 +217,19 @@ std::vector<double> response_grid(const CaseOptions& options);
 // xi_ns; variance = sum_j |tau_j|^2 a_j^2 / 2 [N^2].
 double linear_tension_variance_n2(const CaseInputs& inputs, const CaseOptions& options = {});
 
+// EQ-CASE-3, the linear heading profile: the standard deviation [N] of the
+// linear prediction above at each heading of `headings_deg` (0 = following
+// seas, the case's one wave system turned to it; every other input, the mean
+// tension included, as in `inputs`). Between two headings where the chain
+// was simulated, the query interpolates the ratio of the simulated tension to
+// this profile instead of the tension itself (query.h EQ-QUERY-11): near
+// beam seas the tension has minima a few degrees wide where the first-order
+// surge force (which turns with cos mu) and the heave/pitch extension (which
+// does not) cancel in the line; the linear model has the same minima, the
+// ratio does not (docs/audit.md). InputError for a sea of more than one system.
+std::vector<double> linear_tension_sigma_by_heading_n(const CaseInputs& inputs, const CaseOptions& options,
+                                                       const std::vector<double>& headings_deg);
+
 // Computes the surge forcing of one day of the case (for plots and tests):
 // tug and tow forces (f1 + f2), xi_ns and its rate.
 struct CaseModel;  // the per-case precomputation (opaque)

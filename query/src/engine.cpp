@@ -13,6 +13,7 @@
 
 #include "common/constants.hpp"
 #include "store/database.hpp"
+#include "store/packed_days.hpp"
 
 namespace towdb::query {
 
@@ -26,6 +27,25 @@ struct CaseRec {
   double calc_lbf = kNaN;  // EQ-QUERY-9 T_calc of the case (NaN when not stored)
   int days = 0;
   double u_kips = kNaN, beta_kips = kNaN, dynamic_999_kips = kNaN;
+  std::int64_t profile_id = 0;  // EQ-QUERY-11: heading_profiles row of its line (0: none)
+};
+
+// EQ-QUERY-11: a line's linear heading profile, ln sigma on a uniform grid.
+struct HeadingProfile {
+  double first_deg = 0.0, step_deg = 1.0;
+  std::vector<double> ln_sigma;
+
+  // ln sigma at heading h [deg, 0..180], linear between grid points, the end
+  // values beyond the grid.
+  double ln_at(double h) const {
+    const double x = (h - first_deg) / step_deg;
+    const double last = static_cast<double>(ln_sigma.size() - 1);
+    if (!(x > 0.0)) return ln_sigma.front();
+    if (x >= last) return ln_sigma.back();
+    const auto i = static_cast<std::size_t>(x);
+    const double f = x - static_cast<double>(i);
+    return (1.0 - f) * ln_sigma[i] + f * ln_sigma[i + 1];
+  }
 };
 
 // One stored mean tension at one grid node (duplicates merged by averaging).
@@ -39,6 +59,7 @@ struct MeanPoint {
   double sag_ft = kNaN;  // static catenary's largest sag below the chord (NaN: no fit stored)
   double lowest_ft = kNaN;  // its lowest point above the waterline (NaN: not stored)
   bool above_bs = false;
+  int profile = -1;  // EQ-QUERY-11: index into Group::profiles, -1 when its cases have none (or differ)
   std::vector<int> cases;  // indices into Group::cases
 };
 
@@ -59,6 +80,7 @@ struct Group {
   std::vector<int> node_at;  // flat grid index -> node, -1 where no case is stored
   std::vector<Node> nodes;
   std::vector<CaseRec> cases;
+  std::vector<HeadingProfile> profiles;  // EQ-QUERY-11: those its mean points use
 
   int node_index(const std::array<int, kGridAxes>& idx) const {
     std::size_t flat = 0;
@@ -349,6 +371,7 @@ struct Evaluation {
   double ci_level = 0.0, ci_low = 0.0, ci_high = 0.0;
   double bs_min = 0.0, bs_max = 0.0;
   bool above_bs = false, mean_extrapolated = false;
+  bool heading_profiled = false;  // EQ-QUERY-11: the corners were moved along their heading profiles
   int missing = 0;
   std::array<int, kGridAxes> active{};
   int active_count = 0;
@@ -362,7 +385,57 @@ struct Evaluation {
 struct MeanTarget {
   double mean_lbf = kNaN;
   double factor = kNaN;
+  // EQ-QUERY-11: with the heading pinned to a stored value, move the corners
+  // along their profiles to this heading (the error estimate's pinned
+  // evaluations; NaN: leave them at the stored heading).
+  double heading_deg = kNaN;
 };
+
+// EQ-QUERY-11: moves each corner's value from its node's heading h_c to the
+// query's heading h_q along its line's linear profile, ln x += ln sigma(h_q)
+// - ln sigma(h_c) (u, beta and the interval scale together), so that the
+// multilinear weights interpolate x / sigma across the heading cell instead of
+// x. Every corner must have a profile (else nothing moves): a cell is never
+// half corrected.
+void shift_along_heading(const Group& g, double hq, Space s, Evaluation* ev, int n_corners) {
+  if (g.profiles.empty()) return;
+  const auto& axis = g.axis[kHeading];
+  for (int mask = 0; mask < n_corners; ++mask) {
+    const Corner& c = ev->corners[mask];
+    if (c.node < 0) continue;
+    const auto& pts = g.nodes[c.node].points;
+    if (pts[c.value.p0].profile < 0 || pts[c.value.p1].profile < 0) return;
+  }
+  for (int mask = 0; mask < n_corners; ++mask) {
+    Corner& c = ev->corners[mask];
+    if (c.node < 0) continue;
+    const auto& pts = g.nodes[c.node].points;
+    const double hc = axis[c.idx[kHeading]];
+    NodeValue& v = c.value;
+    auto shift_of = [&](int p) {
+      const HeadingProfile& prof = g.profiles[pts[p].profile];
+      return prof.ln_at(hq) - prof.ln_at(hc);
+    };
+    const double shift = v.p0 == v.p1 ? shift_of(v.p0) : (1.0 - v.t) * shift_of(v.p0) + v.t * shift_of(v.p1);
+    const double f = std::exp(shift);
+    if (s == Space::kLog) {
+      v.g_u += shift;
+      v.g_beta += shift;
+      v.g_ci_low += shift;
+      v.g_ci_high += shift;
+    } else {
+      v.g_u *= f;
+      v.g_beta *= f;
+      v.g_ci_low *= f;
+      v.g_ci_high *= f;
+    }
+    v.u *= f;  // NaN (filled lazily) stays NaN
+    v.beta *= f;
+    v.ci_low *= f;
+    v.ci_high *= f;
+  }
+  ev->heading_profiled = true;
+}
 
 void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Space s, bool extrapolate,
               Evaluation* ev) {
@@ -429,6 +502,11 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
     const double m = g.relative ? ev->factor * node.calc_lbf : target.mean_lbf;
     c.value = node_value(g, node, m, s, extrapolate);
   }
+  ev->heading_profiled = false;
+  const Bracket& bh = br[kHeading];
+  const auto& headings = g.axis[kHeading];
+  const double hq = bh.i0 != bh.i1 ? (1.0 - bh.t) * headings[bh.i0] + bh.t * headings[bh.i1] : target.heading_deg;
+  if (std::isfinite(hq)) shift_along_heading(g, hq, s, ev, n_corners);
   double gu = 0.0, gb = 0.0, g_lo = 0.0, g_hi = 0.0;
   ev->mean_lbf = ev->slack = ev->sag_ft = ev->lowest_ft = ev->ci_low = ev->ci_high = 0.0;
   ev->bs_min = std::numeric_limits<double>::infinity();
@@ -558,12 +636,20 @@ double interpolation_error_kips(const Group& g, const Brackets& br, const Evalua
     const int a = ev.active[j];
     const auto& ax = g.axis[a];
     // The whole cell re-evaluated with this axis pinned to stored index i.
+    // Along heading, when the answer used the profiles (EQ-QUERY-11), each
+    // pinned evaluation is moved to the query's heading too: the estimate
+    // then measures how x / sigma changes between the stored headings (a
+    // value that could not be moved is not available).
+    MeanTarget at = target;
+    const bool moved = a == kHeading && ev.heading_profiled;
+    if (moved) at.heading_deg = (1.0 - br[a].t) * ax[br[a].i0] + br[a].t * ax[br[a].i1];
     auto f_at = [&](int i) {
       Brackets pinned = br;
       pinned[a] = Bracket{i, i, 0.0, false};
       Evaluation e2;
       try {
-        evaluate(g, pinned, target, s, ex, &e2);
+        evaluate(g, pinned, at, s, ex, &e2);
+        if (moved && !e2.heading_profiled) return kNaN;
         return g_of(e2.u + e2.beta * c);
       } catch (const InputError&) {
         return kNaN;
@@ -787,7 +873,7 @@ void read_rows(store::Database& db, const std::filesystem::path& path, LoadedRow
       "c.tp_s, c.gamma, c.swell_hs_ft, c.heading_deg, c.length_ft, c.mean_tension_lbf, c.days, "
       "r.gumbel_u_kips, r.gumbel_alpha_per_kip, r.dynamic_999_kips, r.ci_level, r.ci_low_kips, r.ci_high_kips, "
       "r.breaking_strength_lbf, r.above_breaking_strength, r.slack_fraction, c.calculated_mean_tension_lbf, "
-      "f.sag_ft, f.lowest_elevation_ft FROM cases c JOIN results r ON r.case_id = c.case_id "
+      "f.sag_ft, f.lowest_elevation_ft, c.profile_id FROM cases c JOIN results r ON r.case_id = c.case_id "
       "LEFT JOIN towline_fits f ON f.fit_id = c.fit_id WHERE c.status = 'done' ORDER BY c.case_id");
   while (st.step()) {
     Row r;
@@ -821,6 +907,7 @@ void read_rows(store::Database& db, const std::filesystem::path& path, LoadedRow
     r.rec.calc_lbf = st.column_optional_double(24).value_or(kNaN);
     r.sag_ft = st.column_optional_double(25).value_or(kNaN);
     r.lowest_ft = st.column_optional_double(26).value_or(kNaN);
+    r.rec.profile_id = st.is_null(27) ? 0 : st.column_int(27);
     r.rec.beta_kips = 1.0 / alpha;
     const auto key = std::make_tuple(tug, tow, line, (wind ? "wind:" : "hs:") + family);
     auto [it, inserted] = group_of.try_emplace(key, out->groups.size());
@@ -837,6 +924,64 @@ void read_rows(store::Database& db, const std::filesystem::path& path, LoadedRow
       out->rows.emplace_back();
     }
     out->rows[it->second].push_back(r);
+  }
+}
+
+// EQ-QUERY-11: every stored heading profile by profile_id. A profile longer
+// than a heading every 0.01 deg is not one a build writes.
+constexpr std::int64_t kMaxProfileHeadings = 18001;
+std::map<std::int64_t, HeadingProfile> read_profiles(store::Database& db, const std::filesystem::path& path) {
+  std::map<std::int64_t, HeadingProfile> out;
+  store::Statement st = db.prepare(
+      "SELECT profile_id, heading_first_deg, heading_step_deg, headings, sigma_kips_f32 FROM heading_profiles");
+  while (st.step()) {
+    const std::int64_t id = st.column_int(0);
+    HeadingProfile p;
+    p.first_deg = st.column_double(1);
+    p.step_deg = st.column_double(2);
+    const std::int64_t headings = st.column_int(3);
+    const std::string blob = st.column_blob(4);
+    const std::string row = path.string() + ": heading_profiles row " + std::to_string(id);
+    if (!(p.step_deg > 0.0 && std::isfinite(p.step_deg)) || !(p.first_deg >= 0.0 && p.first_deg <= 180.0) ||
+        headings < 2 || headings > kMaxProfileHeadings) {
+      throw DatabaseError(row + " has first heading " + format_value(p.first_deg) + " deg, step " +
+                          format_value(p.step_deg) + " deg and " + std::to_string(headings) +
+                          " headings; allowed: first in [0, 180], a finite step > 0 and 2 to " +
+                          std::to_string(kMaxProfileHeadings) + " headings");
+    }
+    const auto n = static_cast<std::size_t>(headings);
+    if (blob.size() != 4 * n) {
+      throw DatabaseError(row + ": sigma_kips_f32 holds " + std::to_string(blob.size()) + " bytes; expected 4 x " +
+                          std::to_string(n) + " headings");
+    }
+    const std::string field = "heading_profiles.sigma_kips_f32 of profile_id " + std::to_string(id);
+    for (double sigma : store::unpack_float32(blob, n, field)) {
+      if (!(sigma > 0.0 && std::isfinite(sigma))) {
+        throw DatabaseError(path.string() + ": " + field + " holds " + format_value(sigma) +
+                            " kips; allowed: finite and > 0");
+      }
+      p.ln_sigma.push_back(std::log(sigma));
+    }
+    out.emplace(id, std::move(p));
+  }
+  return out;
+}
+
+// EQ-QUERY-11: a mean point uses its cases' profile when they all have the
+// same one (merged duplicates such as h and 360 - h share their line's).
+void assign_profiles(Group& g, const std::map<std::int64_t, HeadingProfile>& stored) {
+  std::map<std::int64_t, int> index;
+  for (Node& node : g.nodes) {
+    for (MeanPoint& p : node.points) {
+      const std::int64_t id = g.cases[p.cases.front()].profile_id;
+      const bool shared = std::all_of(p.cases.begin(), p.cases.end(),
+                                      [&](int ci) { return g.cases[ci].profile_id == id; });
+      const auto it = stored.find(id);
+      if (id == 0 || !shared || it == stored.end()) continue;
+      auto [at, inserted] = index.try_emplace(id, static_cast<int>(g.profiles.size()));
+      if (inserted) g.profiles.push_back(it->second);
+      p.profile = at->second;
+    }
   }
 }
 
@@ -946,9 +1091,11 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
   Engine e;
   e.options_ = options;
   LoadedRows loaded;
+  std::map<std::int64_t, HeadingProfile> profiles;
   try {
     store::Database db = store::Database::open(path, store::Database::Mode::kReadOnly);
     read_rows(db, path, &loaded);
+    profiles = read_profiles(db, path);
     e.coverage_ = load_coverage_notes(db);
   } catch (const DatabaseError&) {
     throw;
@@ -966,6 +1113,7 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
     Group& g = e.groups_[gi];
     build_grid(g, loaded.rows[gi]);
     merge_points(g, loaded.rows[gi], &e.log_ok_);
+    assign_profiles(g, profiles);
     assign_calculated(g);
     e.case_count_ += static_cast<int>(g.cases.size());
   }

@@ -22,6 +22,12 @@
 //           head seas the wave groups, hence the second-order forces, reach
 //           the tow one group-travel time G / (c_g + U) after the tug
 //           (Newman 1974: the slowly varying force follows the local envelope).
+//   case-6  the linear heading profile (EQ-CASE-3) is the linear prediction's
+//           standard deviation at each heading, bit for bit; it has the
+//           beam-sea minimum the simulated tension has (docs/audit.md:
+//           T-ATF / FFG 7, 1,041 ft wire, 74,086 lbf, 7.96 kt, 27.71 kt:
+//           131 / 38.5 / 70 kips simulated at 76 / 84 / 90 deg); a sea of two
+//           systems is refused.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -233,6 +239,31 @@ TEST(SimulationCase, TowDriftForceLagsTheTugsByTheGroupTravelTime) {  // case-5,
   EXPECT_LT(measured_s, (1.0 + kGroupDelayRelTol) * expected_s) << "expected " << expected_s << " s";
   // The thesis's shared envelope (default): both vessels at once.
   EXPECT_EQ(drift_force_lag_s(in, false, 3.0 * expected_s).first, 0.0);
+}
+
+TEST(SimulationCase, LinearHeadingProfileHasTheBeamSeaMinimum) {  // case-6, EVIDENCE-OF: EQ-CASE-3
+  CaseInputs in = frigate_case(0.0, 3);
+  in.towline = catalog().towline(*in.tug, model::LineKind::kWire, units::ft_to_m(1041.0));
+  in.speed_m_s = units::kt_to_m_s(7.96);
+  in.sea = sea::single_system(sea::Spectrum::pierson_moskowitz(units::kt_to_m_s(27.71)), 0.0);
+  in.mean_tension_n = units::lbf_to_n(74086.0);
+  const CaseOptions o;
+  const std::vector<double> headings = {76.0, 84.0, 90.0};
+  const std::vector<double> sigma = linear_tension_sigma_by_heading_n(in, o, headings);
+  ASSERT_EQ(sigma.size(), headings.size());
+  for (std::size_t j = 0; j < headings.size(); ++j) {
+    CaseInputs at = in;
+    at.sea.systems[0].heading_rad = units::deg_to_rad(headings[j]);
+    EXPECT_EQ(sigma[j], std::sqrt(linear_tension_variance_n2(at, o))) << headings[j];
+  }
+  // The simulated ratios 38.5 / 131 = 0.29 and 38.5 / 70 = 0.55 (measured 2026-12-05 with this
+  // chain: the linear sigma is 22.8 / 6.5 / 11.4 kips, ratios 0.28 and 0.57).
+  EXPECT_LT(sigma[1], 0.4 * sigma[0]);
+  EXPECT_LT(sigma[1], 0.7 * sigma[2]);
+  CaseInputs swell = in;
+  swell.sea = sea::wind_sea_and_swell(sea::Spectrum::pierson_moskowitz(units::kt_to_m_s(20.0)), 0.0,
+                                      sea::Spectrum::bretschneider_peak_period(2.0, 12.0), 1.0);
+  test::expect_input_error([&] { linear_tension_sigma_by_heading_n(swell, o, headings); }, "wave systems");
 }
 
 }  // namespace

@@ -6,7 +6,8 @@
 // Test plan:
 //   query-lies-1  bad stored values: alpha <= 0 (negative Gumbel scale) or subnormal (infinite scale), NULL (NaN),
 //                 inf, text, out-of-range
-//                 level, fraction, heading, speed, days, calculated mean tension, sag -> refused, named
+//                 level, fraction, heading, speed, days, calculated mean tension, sag, a heading profile's
+//                 sigma (0, NaN), step or length (EQ-QUERY-11) -> refused, named
 //   query-lies-2  contradictions between columns: dynamic_999 != u + beta y_999 (EQ-QUERY-3), ci_low > ci_high,
 //                 a sea with neither wind nor Hs, an Hs without Tp -> refused, named
 //   query-lies-3  a schema version from the future -> refused naming both versions
@@ -133,6 +134,15 @@ TEST_F(DatabaseLies, BadStoredValuesAreRefusedAndNamed) {  // query-lies-1
        {"case 1", "towline_fits.lowest_elevation_ft = 'deep' (text)"}},
       {"UPDATE towline_fits SET lowest_elevation_ft = -9e999 WHERE fit_id = 1",
        {"case 1", "towline_fits.lowest_elevation_ft = -inf", "finite elevation"}},
+      // Heading profiles (schema 10): 1.0f is X'0000803F', 0.0f X'00000000', NaN X'0000C07F'.
+      {"INSERT INTO heading_profiles VALUES (1, X'01', 60000, 0, 2.5, 2, X'0000803F00000000', NULL)",
+       {"heading_profiles.sigma_kips_f32 of profile_id 1 holds 0 kips", "finite and > 0"}},
+      {"INSERT INTO heading_profiles VALUES (1, X'01', 60000, 0, 2.5, 2, X'0000C07F0000803F', NULL)",
+       {"heading_profiles.sigma_kips_f32 of profile_id 1 holds nan kips"}},
+      {"INSERT INTO heading_profiles VALUES (7, X'01', 60000, 0, 0, 2, X'0000803F0000803F', NULL)",
+       {"heading_profiles row 7 has first heading 0 deg, step 0 deg", "allowed: first in [0, 180], a finite step > 0"}},
+      {"INSERT INTO heading_profiles VALUES (7, X'01', 60000, 0, 2.5, 3, X'0000803F0000803F', NULL)",
+       {"heading_profiles row 7: sigma_kips_f32 holds 8 bytes; expected 4 x 3 headings"}},
   };
   for (const Lie& l : lies) {
     SCOPED_TRACE(l.sql);

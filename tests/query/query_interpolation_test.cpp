@@ -23,6 +23,9 @@
 //   query-interp-16 max-speed stops where the calculated mean tension reaches the tugs' 125,000 lbf
 //   query-interp-17 a sea given as Hs (and Tp) on a wind-sea database: answered at the equivalent wind, said so;
 //                   a Tp far from that sea's refused naming both periods (EQ-QUERY-10)
+//   query-interp-18 heading profiles (EQ-QUERY-11): data equal to a smooth factor times a line's stored
+//                   profile are exact between stored headings, in log and linear space; a cell with a
+//                   corner without a profile is interpolated as before, never half corrected
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -764,6 +767,101 @@ TEST_F(QueryTest, HsOnAWindSeaDatabaseIsAnsweredAtTheEquivalentWind) {
   rq.values.tp_s = tp_s;
   rq.spectrum = "jonswap";
   EXPECT_THROW((void)db.query(rq), QueryError);
+}
+
+// query-interp-18
+// A heading profile with a minimum between stored headings (the beam-sea dips
+// of docs/audit.md): ln P linear between its 2.5 deg grid points, the values
+// exactly representable in binary32 (the table stores sigma_kips_f32).
+double profile_point(int j) {
+  const double h = 2.5 * j;
+  return static_cast<float>(10.0 - 8.0 * std::cos((h - 84.0) * kPi / 30.0) + 0.02 * h);
+}
+double profile_at(double h) {
+  const double x = h / 2.5;
+  const int j = std::min(static_cast<int>(x), 71);
+  const double f = x - j;
+  return std::exp((1.0 - f) * std::log(profile_point(j)) + f * std::log(profile_point(j + 1)));
+}
+
+// The profile P on its 73 grid points (the lines' scales cancel in ratios).
+std::vector<double> profile_points() {
+  std::vector<double> sigma;
+  for (int j = 0; j < 73; ++j) sigma.push_back(profile_point(j));
+  return sigma;
+}
+
+// A random query inside the profile test's grid (5-7 kt, 20-30 kt, 60-105 deg,
+// 1,000-2,000 ft) at a mean tension every corner node stores.
+QueryPoint profile_cell_point(std::mt19937& rng, const GridSpec& g) {
+  std::uniform_real_distribution<double> us(5.0, 7.0), uw(20.0, 30.0), uh(60.0, 105.0), ul(1000.0, 2000.0), uf(0, 1);
+  const double s = us(rng), w = uw(rng), h = uh(rng), l = ul(rng);
+  const auto [m0, m1] = common_mean_range(g, s, w);
+  return {s, w, h, l, m0 + uf(rng) * (m1 - m0)};
+}
+
+TEST_F(QueryTest, HeadingProfilesMakeDataProportionalToThemExactBetweenHeadings) {
+  // EVIDENCE-OF: EQ-QUERY-11 (x / sigma interpolated across a heading cell; exact when x / sigma is
+  // what EQ-QUERY-6 reproduces exactly: exp(multilinear) in log space, multilinear in linear space)
+  GridSpec g;
+  g.speeds_kt = {5.0, 7.0};
+  g.winds_kt = {20.0, 30.0};
+  g.headings_deg = {60.0, 75.0, 90.0, 105.0};
+  g.lengths_ft = {1000.0, 2000.0};
+  g.u_kips = [](double s, double w, double h, double l, double m) { return u_exponential(s, w, 0.0, l, m) * profile_at(h); };
+  g.beta_kips = [](double s, double w, double h, double l, double m) { return beta_exponential(s, w, 0.0, l, m) * profile_at(h); };
+  const std::string plain = write(grid_cases(g), "plain.towdb");
+  const std::string with = write(grid_cases(g), "profiles.towdb");
+  write_heading_profiles(with, profile_points());
+  std::mt19937 rng(18);
+  Database log_db(with, TOWDB_QUERY_SPACE_LOG);
+  Database plain_db(plain, TOWDB_QUERY_SPACE_LOG);
+  double worst_plain = 0.0;
+  for (int i = 0; i < 200; ++i) {
+    const auto [s, w, h, l, m] = profile_cell_point(rng, g);
+    const QueryResult r = log_db.query(request(s, w, h, l, m));
+    EXPECT_REL_CLOSE(r.values.gumbel_u_kips, g.u_kips(s, w, h, l, m), kRoundOffRelTol) << s << " " << w << " " << h;
+    EXPECT_REL_CLOSE(1.0 / r.values.gumbel_alpha_per_kip, g.beta_kips(s, w, h, l, m), kRoundOffRelTol);
+    const QueryResult p = plain_db.query(request(s, w, h, l, m));
+    worst_plain = std::max(worst_plain, std::abs(p.values.gumbel_u_kips / g.u_kips(s, w, h, l, m) - 1.0));
+  }
+  // Without the profiles the dip at 84 deg is lost between 75 and 90 deg.
+  EXPECT_GT(worst_plain, 0.3);
+
+  // Linear space: the profile ratio times a multilinear function is exact too.
+  GridSpec lin = g;
+  lin.u_kips = [](double s, double w, double h, double l, double m) { return u_multilinear(s, w, 0.0, l, m) * profile_at(h); };
+  lin.beta_kips = [](double s, double w, double h, double l, double m) { return beta_multilinear(s, w, 0.0, l, m) * profile_at(h); };
+  const std::string lin_path = write(grid_cases(lin), "linear.towdb");
+  write_heading_profiles(lin_path, profile_points());
+  Database lin_db(lin_path, TOWDB_QUERY_SPACE_LINEAR);
+  for (int i = 0; i < 100; ++i) {
+    const auto [s, w, h, l, m] = profile_cell_point(rng, lin);
+    const QueryResult r = lin_db.query(request(s, w, h, l, m));
+    EXPECT_REL_CLOSE(r.values.gumbel_u_kips, lin.u_kips(s, w, h, l, m), kRoundOffRelTol) << s << " " << w << " " << h;
+  }
+
+  // One case without a profile: its cells are interpolated as without profiles (never half
+  // corrected); the stored nodes stay exact.
+  const std::string holed = write(grid_cases(g), "holed.towdb");
+  write_heading_profiles(holed, profile_points(), 1);  // case 1: 5 kt, 20 kt, 60 deg, 1,000 ft, its first mean tension
+  Database holed_db(holed, TOWDB_QUERY_SPACE_LOG);
+  const double m = grid_cases(g).front().mean_tension_lbf;
+  const QueryResult a = holed_db.query(request(5.0, 20.0, 70.0, 1000.0, m));
+  const QueryResult b = plain_db.query(request(5.0, 20.0, 70.0, 1000.0, m));
+  EXPECT_EQ(a.values.gumbel_u_kips, b.values.gumbel_u_kips);
+  const QueryResult c = holed_db.query(request(5.0, 20.0, 80.0, 1000.0, m));
+  EXPECT_REL_CLOSE(c.values.gumbel_u_kips, g.u_kips(5.0, 20.0, 80.0, 1000.0, m), kRoundOffRelTol);
+  const QueryResult node = log_db.query(request(5.0, 20.0, 75.0, 1000.0, m));
+  EXPECT_EQ(node.values.gumbel_u_kips, g.u_kips(5.0, 20.0, 75.0, 1000.0, m));
+
+  // EQ-QUERY-7 along heading with profiles: the pinned evaluations moved to the query's heading
+  // all give the answer (x / sigma does not change with heading here), so only heading being
+  // free leaves no interpolation error; without profiles the dip is a large one.
+  const QueryResult free_heading = log_db.query(request(5.0, 20.0, 84.4, 1000.0, m));
+  EXPECT_LT(free_heading.values.interpolation_error_kips, 1e-9 * free_heading.values.dynamic_999_kips);
+  const QueryResult plain_heading = plain_db.query(request(5.0, 20.0, 84.4, 1000.0, m));
+  EXPECT_GT(plain_heading.values.interpolation_error_kips, 0.1 * plain_heading.values.dynamic_999_kips);
 }
 
 }  // namespace

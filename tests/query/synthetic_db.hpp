@@ -15,6 +15,7 @@
 
 #include "common/constants.hpp"
 #include "store/database.hpp"
+#include "store/packed_days.hpp"
 
 namespace towdb::test {
 
@@ -129,6 +130,39 @@ inline void write_synthetic_db(const std::filesystem::path& path, const std::vec
           .bind(16, 1.0)
           .bind(17, "test");
       ins_result.run();
+    }
+  });
+}
+
+// Heading profiles (schema 10, query.h EQ-QUERY-11): one heading_profiles row
+// per line (speed, wind, length, mean tension) holding `sigma_kips` on the
+// 0, 2.5, ..., deg grid, and every case pointed at its line's; the case with
+// id `skip` (0: none) is left without one.
+inline void write_heading_profiles(const std::filesystem::path& path, const std::vector<double>& sigma_kips,
+                                   std::int64_t skip = 0) {
+  auto db = store::Database::open(path, store::Database::Mode::kReadWrite);
+  db.transaction([&] {
+    auto lines = db.prepare(
+        "SELECT DISTINCT speed_kt, wind_kt, length_ft, mean_tension_lbf FROM cases ORDER BY 1, 2, 3, 4");
+    auto insert = db.prepare(
+        "INSERT INTO heading_profiles (profile_key, mean_tension_lbf, heading_first_deg, heading_step_deg, headings, "
+        "sigma_kips_f32) VALUES (?, ?, 0, 2.5, ?, ?)");
+    auto point = db.prepare(
+        "UPDATE cases SET profile_id = ? WHERE speed_kt = ? AND wind_kt = ? AND length_ft = ? AND "
+        "mean_tension_lbf = ? AND case_id != ?");
+    int k = 0;
+    while (lines.step()) {
+      const double s = lines.column_double(0), w = lines.column_double(1), l = lines.column_double(2);
+      const double m = lines.column_double(3);
+      insert.reset();
+      insert.bind(1, "profile-" + std::to_string(++k))
+          .bind(2, m)
+          .bind(3, static_cast<std::int64_t>(sigma_kips.size()))
+          .bind_blob(4, store::pack_float32(sigma_kips));
+      insert.run();
+      point.reset();
+      point.bind(1, db.last_insert_rowid()).bind(2, s).bind(3, w).bind(4, l).bind(5, m).bind(6, skip);
+      point.run();
     }
   });
 }

@@ -166,6 +166,8 @@ void make_version_3(const std::filesystem::path& path) {
   ASSERT_EQ(sqlite3_open(path.c_str(), &raw), SQLITE_OK);
   const char* sql =
       "DROP TABLE case_days;"
+      "DROP TABLE heading_profiles;"  // migration 10 adds it again
+      "ALTER TABLE cases DROP COLUMN profile_id;"
       "DROP TABLE coverage_notes;"  // migration 5 adds it again
       "ALTER TABLE towline_fits DROP COLUMN lowest_elevation_ft;"  // migration 6 adds it again
       "CREATE TABLE daily_maxima (case_id INTEGER NOT NULL REFERENCES cases (case_id) ON DELETE CASCADE,"
@@ -325,6 +327,7 @@ TEST_F(StoreTest, MigrationNineStoresTheCaseKeysAsTheirThirtyTwoBytes) {
             " heading_deg, line_type, length_ft, mean_tension_lbf, days, seed) VALUES (1, '" + hex + "', '" + hex +
             "', '" + hex + "', 'A', 'B', 5, 'pierson-moskowitz', 0, 'fiber', 800, 1000, 2, 1), (2, 'k2', 'h2', NULL,"
             " 'A', 'B', 5, 'pierson-moskowitz', 30, 'fiber', 800, 1000, 2, 1)");
+    db.exec("DROP TABLE heading_profiles; ALTER TABLE cases DROP COLUMN profile_id");  // migration 10 adds them
     db.exec("PRAGMA user_version = 8");
   }
   Database db = Database::open(path, Database::Mode::kReadWrite);  // migrates

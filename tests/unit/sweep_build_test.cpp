@@ -37,6 +37,11 @@
 //                  stored cases are re-keyed, not recomputed, and the database then equals a fresh
 //                  build from the edited files (keys, fits, results, days); the dry run says so;
 //                  a value's edit in the same files is recomputed
+//   sweep-build-18 schema 10, heading profiles (profiles.hpp EQ-SWEEP-8): the last stage stores one
+//                  profile per line of two or more headings (none for a single heading or a swell
+//                  sea), the function's values in kips; 1 and 2 threads give the same rows; a second
+//                  build computes none; changed cases get new profiles and the old ones are
+//                  removed; a line whose profile fails keeps none and is named
 #include <sqlite3.h>
 #include <sys/file.h>
 #include <fcntl.h>
@@ -45,6 +50,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <mutex>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -688,6 +694,83 @@ TEST(SweepBuild, CommentOnlyEditsReKeyInsteadOfRecomputing) {  // sweep-build-17
   const sweep::BuildSummary recomputed = sweep::run_build(db, f.file, f.cases, changed, make_test_runner(), o);
   EXPECT_EQ(recomputed.rekeyed, 0);
   EXPECT_EQ(recomputed.scheduled, 8);
+}
+
+TEST(SweepBuild, StoresOneHeadingProfilePerLine) {  // sweep-build-18
+  Fixture f;
+  int calls = 0;
+  std::mutex calls_mutex;
+  // sigma(h) = 1,000 N (2 + cos h) (1 + H / 1e6 lbf): distinct per line and heading.
+  auto closed_form = [&](const sweep::CaseSpec& spec, const io::ShipCatalog&, const std::vector<double>& headings) {
+    if (headings.size() > 1) {  // a line's profile (single headings warm the response cache)
+      const std::lock_guard<std::mutex> lock(calls_mutex);
+      ++calls;
+    }
+    if (spec.tow == "YRBM" && spec.line == model::LineKind::kFiber) {
+      throw NumericalError("test: this line's linear model fails");
+    }
+    std::vector<double> sigma;
+    for (double h : headings) sigma.push_back(1000.0 * (2.0 + std::cos(units::deg_to_rad(h))) * (1.0 + spec.mean_tension_lbf / 1e6));
+    return sigma;
+  };
+  sweep::BuildOptions o;
+  o.heading_profile = closed_form;
+  const fs::path db = f.dir / "profiles.db";
+  const sweep::BuildSummary s = f.build(db, 2, make_test_runner(), o);
+  // The grid's 8 lines (2 tows x 2 towlines x 2 tensions, headings 0 and 180); the explicit
+  // cases are a single heading and a swell sea.
+  EXPECT_EQ(s.profiles.lines, 8);
+  const int failing = static_cast<int>(query_int(
+      db, "SELECT count(DISTINCT mean_tension_lbf) FROM cases WHERE tow_name = 'YRBM' AND line_type = 'fiber'"));
+  ASSERT_GT(failing, 0);  // the failure path is exercised
+  EXPECT_EQ(s.profiles.failed, failing);
+  EXPECT_EQ(s.profiles.computed, 8 - failing);
+  ASSERT_EQ(s.profiles.failures.size(), static_cast<std::size_t>(failing));
+  EXPECT_NE(s.profiles.failures.front().find("this line's linear model fails"), std::string::npos);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM heading_profiles"), 8 - failing);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE profile_id IS NOT NULL"), 2 * (8 - failing));
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE sweep_label LIKE 'explicit%' AND profile_id IS NOT NULL"), 0);
+  {
+    auto d = store::Database::open(db, store::Database::Mode::kReadOnly);
+    auto st = d.prepare(
+        "SELECT p.mean_tension_lbf, p.heading_step_deg, p.headings, p.sigma_kips_f32, c.mean_tension_lbf FROM "
+        "heading_profiles p JOIN cases c ON c.profile_id = p.profile_id");
+    int rows = 0;
+    while (st.step()) {
+      ++rows;
+      const double m = st.column_double(4);
+      EXPECT_EQ(st.column_double(0), m);
+      EXPECT_EQ(st.column_double(1), sweep::kProfileStepDeg);
+      ASSERT_EQ(st.column_int(2), sweep::kProfileHeadings);
+      const std::vector<double> kips = store::unpack_float32(st.column_blob(3), sweep::kProfileHeadings, "test");
+      for (int j = 0; j < sweep::kProfileHeadings; ++j) {
+        const double h = sweep::kProfileStepDeg * j;
+        const double expected = units::n_to_kips(1000.0 * (2.0 + std::cos(units::deg_to_rad(h))) * (1.0 + m / 1e6));
+        EXPECT_EQ(kips[j], static_cast<double>(static_cast<float>(expected))) << h;
+      }
+    }
+    EXPECT_EQ(rows, 2 * (8 - failing));
+  }
+  // One thread: the same rows.
+  const fs::path one = f.dir / "one.db";
+  f.build(one, 1, make_test_runner(), o);
+  EXPECT_EQ(dump_database(one, provenance_columns()), dump_database(db, provenance_columns()));
+
+  // Up to date: nothing computed (the failed line is tried again).
+  calls = 0;
+  const sweep::BuildSummary again = f.build(db, 2, make_test_runner(), o);
+  EXPECT_EQ(again.profiles.up_to_date, 8 - failing);
+  EXPECT_EQ(again.profiles.computed, 0);
+  EXPECT_EQ(calls, failing);
+
+  // New cases (a new code version): new profiles, the old ones removed.
+  o.code_version = "99.0.0-test";
+  const sweep::BuildSummary v2 = f.build(db, 2, make_test_runner(), o);
+  EXPECT_EQ(v2.profiles.computed, 8 - failing);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM heading_profiles"), 8 - failing);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM heading_profiles WHERE profile_id NOT IN (SELECT profile_id FROM "
+                          "cases WHERE profile_id IS NOT NULL)"),
+            0);
 }
 
 }  // namespace

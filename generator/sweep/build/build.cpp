@@ -407,6 +407,11 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
       run_threads(cases, work, catalog, runner, options, recorder, summary);
     }
     recorder.finish();
+    if (!summary.interrupted && options.heading_profile) {
+      summary.profiles = update_heading_profiles(*db, cases, keys, catalog, options.heading_profile, options.threads,
+                                                 summary.build_id, options.stop);
+      summary.interrupted = summary.profiles.interrupted;
+    }
   } catch (...) {
     if (ranks > 1 && registered.empty()) stop_workers();
     try {

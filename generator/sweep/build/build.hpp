@@ -27,6 +27,7 @@
 #include "sweep/build/distributed.hpp"
 #include "sweep/spec/keys.hpp"
 #include "sweep/spec/sweep_file.hpp"
+#include "sweep/build/profiles.hpp"
 #include "sweep/build/writer.hpp"
 
 namespace towdb::sweep {
@@ -57,6 +58,9 @@ struct BuildOptions {
   // Fills the lowest point of fits stored before schema 6 whose case is in
   // this sweep and up to date (nullptr: leaves them NULL).
   LowestPointFn lowest_elevation_m;
+  // The last stage: each line's linear heading profile (profiles.hpp,
+  // EQ-SWEEP-8) after the cases (nullptr: no profiles are stored or updated).
+  HeadingProfileFn heading_profile;
 
   // Throws InputError naming the field: threads in [1, 1024].
   void validate() const;
@@ -75,6 +79,7 @@ struct BuildSummary {
   int lowest_points_filled = 0;  // fits stored before schema 6 given their lowest point
   int maxima_repacked = 0;       // cases whose daily maxima were repacked as binary16 (maxima_precision)
   int rekeyed = 0;  // stored cases moved to new keys: their files changed in comments or layout only (rekey.hpp)
+  ProfileSummary profiles;  // the heading-profile stage (lines 0 when it did not run)
   int slack_snatch_dropped = 0;  // cases whose per-day slack and snatch were dropped (day_records = "maxima")
   std::vector<std::string> failures;  // "case_id N (label): reason", this run
 };

@@ -45,21 +45,37 @@ sea::SeaState sea_state(const SeaSpec& s, double heading_deg) {
   return sea::single_system(wind_sea, mu);
 }
 
+namespace {
+
+// The simulation's inputs of a sweep case (the catalog outlives them).
+simulation::CaseInputs case_inputs(const CaseSpec& spec, const io::ShipCatalog& catalog) {
+  const model::Vessel& tug = catalog.vessel(spec.tug).vessel;
+  const model::Vessel& tow = catalog.vessel(spec.tow).vessel;
+  simulation::CaseInputs in;
+  in.tug = &tug;
+  in.tow = &tow;
+  in.towline = catalog.towline(tug, spec.line, spec.length_m());
+  in.speed_m_s = spec.speed_m_s();
+  in.sea = sea_state(spec.sea, spec.heading_deg);
+  in.mean_tension_n = spec.mean_tension_n();
+  in.days = spec.days;
+  in.seed = static_cast<std::uint64_t>(spec.seed);
+  return in;
+}
+
+}  // namespace
+
+HeadingProfileFn linear_heading_profile(simulation::CaseOptions options) {
+  options.validate();
+  return [options](const CaseSpec& spec, const io::ShipCatalog& catalog, const std::vector<double>& headings_deg) {
+    return simulation::linear_tension_sigma_by_heading_n(case_inputs(spec, catalog), options, headings_deg);
+  };
+}
+
 CaseRunner simulation_case_runner(simulation::CaseOptions options) {
   options.validate();
   return [options](const CaseSpec& spec, const io::ShipCatalog& catalog) {
-    const model::Vessel& tug = catalog.vessel(spec.tug).vessel;
-    const model::Vessel& tow = catalog.vessel(spec.tow).vessel;
-    simulation::CaseInputs in;
-    in.tug = &tug;
-    in.tow = &tow;
-    in.towline = catalog.towline(tug, spec.line, spec.length_m());
-    in.speed_m_s = spec.speed_m_s();
-    in.sea = sea_state(spec.sea, spec.heading_deg);
-    in.mean_tension_n = spec.mean_tension_n();
-    in.days = spec.days;
-    in.seed = static_cast<std::uint64_t>(spec.seed);
-    const simulation::CaseResult r = simulation::run_case(in, options);
+    const simulation::CaseResult r = simulation::run_case(case_inputs(spec, catalog), options);
 
     CaseOutcome out;
     TowlineFitOutcome& f = out.fit;

@@ -31,6 +31,10 @@ CaseRunner simulation_case_runner(simulation::CaseOptions options);
 // written before schema 6.
 LowestPointFn static_lowest_elevation(simulation::CaseOptions options);
 
+// The linear heading profile of a case's line (simulation EQ-CASE-3) with
+// `options` (responses shared with the cases through the response cache).
+HeadingProfileFn linear_heading_profile(simulation::CaseOptions options);
+
 // R_S = 2 int R_aw/zeta^2 S dw of the tow (seakeeping EQ-AR-2), summed over
 // the wave systems, on the case grid of `options` (responses shared with the
 // cases through simulation::cached_responses).

@@ -244,7 +244,7 @@ std::vector<RegisteredCase> DatabaseWriter::register_cases(const std::vector<Cas
         "tug_vessel_id = ?, tow_vessel_id = ?, speed_kt = ?, spectrum = ?, wind_kt = ?, hs_ft = ?, tp_s = ?, "
         "gamma = ?, swell_hs_ft = ?, swell_tp_s = ?, swell_heading_deg = ?, heading_deg = ?, line_type = ?, "
         "length_ft = ?, mean_tension_lbf = ?, mean_tension_label = ?, days = ?, seed = ?, condition_key = ?, "
-        "nominal_speed_kt = ?, calculated_mean_tension_lbf = ?, status = 'pending', error_message = NULL, fit_id = NULL, build_id = ?, "
+        "nominal_speed_kt = ?, calculated_mean_tension_lbf = ?, status = 'pending', error_message = NULL, fit_id = NULL, profile_id = NULL, build_id = ?, "
         "updated_utc = ? WHERE case_id = ?");
     store::Statement drop_results = db_.prepare("DELETE FROM results WHERE case_id = ?");
     store::Statement drop_days = db_.prepare("DELETE FROM case_days WHERE case_id = ?");

@@ -161,6 +161,11 @@ using CaseRunner = std::function<CaseOutcome(const CaseSpec&, const io::ShipCata
 // waterline, negative below]: what a build fills in for fits stored before
 // schema 6 (the runner's fit carries it for new ones).
 using LowestPointFn = std::function<double(const CaseSpec&, const io::ShipCatalog&)>;
+// The linear dynamic-tension standard deviation [N] of a case's line at each
+// of `headings_deg` (the spec's heading replaced; simulation EQ-CASE-3): the
+// heading profiles a build stores for the query (sweep/build/profiles.hpp).
+using HeadingProfileFn =
+    std::function<std::vector<double>(const CaseSpec&, const io::ShipCatalog&, const std::vector<double>& headings_deg)>;
 
 // The production runner is registered once by the CLI (the simulation chain);
 // `towdb build` refuses to run while none is registered.

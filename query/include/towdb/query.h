@@ -96,6 +96,33 @@
  *             stated in the answer (equivalent_wind_kt and a warning). A Tp
  *             more than 20 % from that sea's Tp = 2 pi U / (0.877 g) is
  *             refused (TOWDB_QUERY_RANGE) naming both periods.
+ * EQ-QUERY-11 Heading profiles. Where the database stores a linear heading
+ *             profile sigma_l(h) for the line l of a stored mean tension (the
+ *             cases that differ only in heading; heading_profiles, the
+ *             generator's EQ-CASE-3 and EQ-SWEEP-8: the linear model's
+ *             dynamic-tension standard deviation every 2.5 deg, ln sigma
+ *             linear in between), a cell whose heading is not pinned moves
+ *             each corner c from its node's heading h_c to the query's h_q
+ *             along that profile before the weights of EQ-QUERY-6 combine
+ *             them:
+ *               g_c <- g_c + ln sigma_l(h_q) - ln sigma_l(h_c)   (log space),
+ *               g_c <- g_c sigma_l(h_q) / sigma_l(h_c)           (linear space),
+ *             for u, beta and the stored interval alike (a change of scale),
+ *             averaged over the node's two mean tensions with their weights
+ *             when the corner lies between them. Across a heading cell the
+ *             query thus interpolates x / sigma, not x: near beam seas the
+ *             tension has minima a few degrees wide, where the first-order
+ *             surge force (which turns with cos mu) and the heave/pitch
+ *             extension cancel in the line, and the linear model has them
+ *             too (docs/audit.md). Exact when x / sigma is what EQ-QUERY-6
+ *             reproduces exactly; unchanged at the stored headings. A cell
+ *             with any corner without a profile is interpolated as without
+ *             profiles (never half corrected). Along heading the error
+ *             estimate of EQ-QUERY-7 then takes its differences of the
+ *             stored headings' values each moved to h_q the same way, i.e.
+ *             of x / sigma: where the profile explains the tension's change
+ *             the estimate is small, where the ratio changes (slack, the
+ *             slowly varying forces) it is not.
  *
  * CONVENTIONS AND UNITS
  *   Units are those of the database, in every name: kt, ft, lbf, kips
