@@ -124,7 +124,8 @@ inline std::string dump_database(const std::filesystem::path& path, const std::s
     return "cannot open " + path.string();
   }
   std::string out;
-  for (const char* table : {"vessels", "towline_components", "towline_fits", "cases", "results", "case_days"}) {
+  for (const char* table :
+       {"vessels", "towline_components", "towline_fits", "cases", "results", "case_days", "heading_profiles"}) {
     const std::string order = "1";
     const std::string sql = std::string("SELECT * FROM ") + table + " ORDER BY " + order;
     sqlite3_stmt* st = nullptr;
@@ -170,7 +171,8 @@ inline std::string dump_database(const std::filesystem::path& path, const std::s
 // (sweep.hpp EQ-SWEEP-7): build ids and times, wall-clock run time.
 inline const std::set<std::string>& provenance_columns() {
   static const std::set<std::string> kColumns = {"cases.build_id", "cases.updated_utc", "results.runtime_s",
-                                                 "vessels.file_path", "towline_components.file_path"};
+                                                 "vessels.file_path", "towline_components.file_path",
+                                                 "heading_profiles.build_id"};
   return kColumns;
 }
 

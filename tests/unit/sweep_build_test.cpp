@@ -763,6 +763,27 @@ TEST(SweepBuild, StoresOneHeadingProfilePerLine) {  // sweep-build-18
   EXPECT_EQ(again.profiles.computed, 0);
   EXPECT_EQ(calls, failing);
 
+  // A stop request during the stage (as SIGINT would): the build ends interrupted with the
+  // profiles not yet written left for the next build, which computes only those.
+  const fs::path stopped = f.dir / "stopped.db";
+  std::atomic<bool> stop{false};
+  sweep::BuildOptions stopping = o;
+  stopping.stop = &stop;
+  stopping.heading_profile = [&](const sweep::CaseSpec& spec, const io::ShipCatalog& catalog,
+                                 const std::vector<double>& headings) {
+    stop = true;  // the first call (the warm-up's) asks to stop
+    return closed_form(spec, catalog, headings);
+  };
+  const sweep::BuildSummary cut = f.build(stopped, 2, make_test_runner(), stopping);
+  EXPECT_TRUE(cut.interrupted);
+  EXPECT_EQ(cut.profiles.computed, 0);
+  EXPECT_EQ(query_int(stopped, "SELECT count(*) FROM heading_profiles"), 0);
+  EXPECT_EQ(query_int(stopped, "SELECT count(*) FROM builds WHERE status = 'interrupted'"), 1);
+  const sweep::BuildSummary resumed = f.build(stopped, 2, make_test_runner(), o);
+  EXPECT_FALSE(resumed.interrupted);
+  EXPECT_EQ(resumed.profiles.computed, 8 - failing);
+  EXPECT_EQ(dump_database(stopped, provenance_columns()), dump_database(db, provenance_columns()));
+
   // New cases (a new code version): new profiles, the old ones removed.
   o.code_version = "99.0.0-test";
   const sweep::BuildSummary v2 = f.build(db, 2, make_test_runner(), o);
