@@ -231,7 +231,7 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
               << s.profiles.computed << " computed, " << s.profiles.failed << " failed";
   }
   std::cout << (s.interrupted ? "; interrupted (run again with the same command to continue)" : "") << "\n";
-  return (s.failed > 0 || s.interrupted) ? 1 : 0;
+  return (s.failed > 0 || s.profiles.failed > 0 || s.interrupted) ? 1 : 0;
 }
 
 // meta.last_audit as JSON (null when the database was never audited).
