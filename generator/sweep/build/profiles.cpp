@@ -19,7 +19,6 @@ struct Line {
   std::vector<std::size_t> members;   // indices into the sweep's cases, finished
   std::vector<std::int64_t> case_ids;
   std::string profile_key;            // 32 bytes
-  std::int64_t stored_profile = 0;    // 0: none under profile_key
 };
 
 // The line a case belongs to: every input but the heading (and the days and
@@ -146,8 +145,8 @@ ProfileSummary update_heading_profiles(store::Database& db, const std::vector<Ca
     find.reset();
     find.bind_blob(1, lines[l].profile_key);
     if (find.step()) {
-      lines[l].stored_profile = find.column_int(0);
-      db.transaction([&] { point_cases(db, lines[l], lines[l].stored_profile); });
+      const std::int64_t stored = find.column_int(0);
+      db.transaction([&] { point_cases(db, lines[l], stored); });
       ++summary.up_to_date;
     } else {
       work.push_back(l);
