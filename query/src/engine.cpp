@@ -197,6 +197,39 @@ double to_space(double v, Space s) { return s == Space::kLog ? std::log(v) : v; 
 double from_space(double g, Space s) { return s == Space::kLog ? std::exp(g) : g; }
 double u_in(const MeanPoint& p, Space s) { return s == Space::kLog ? p.ln_u : p.u_kips; }
 double beta_in(const MeanPoint& p, Space s) { return s == Space::kLog ? p.ln_beta : p.beta_kips; }
+double ci_low_in(const MeanPoint& p, Space s) { return s == Space::kLog ? p.ln_ci_low : p.ci_low_kips; }
+double ci_high_in(const MeanPoint& p, Space s) { return s == Space::kLog ? p.ln_ci_high : p.ci_high_kips; }
+
+// EQ-QUERY-6: a node's value of f at mean tension m inside [m_i0, m_i0+1],
+// by the monotone piecewise-cubic Hermite interpolant of its k >= 3 stored
+// mean tensions (Fritsch & Carlson 1980, SIAM J. Numer. Anal. 17(2); the
+// slopes of Fritsch & Butland 1984, SIAM J. Sci. Stat. Comput. 5(2)): at an
+// interior point the weighted harmonic mean of the two secants, zero where
+// they differ in sign (a local extremum stays at the stored point); at an end
+// the end interval's secant. The interpolant passes through every stored
+// value, never leaves the range of an interval's two values where the data
+// are monotone, and is exact for f linear in m. NaN when a value it uses is
+// not finite (the caller then keeps the chord).
+template <class F>
+double monotone_cubic_in_mean(const std::vector<MeanPoint>& pts, int i0, double m, const F& f) {
+  const int k = static_cast<int>(pts.size());
+  auto x = [&](int i) { return pts[i].mean_lbf; };
+  auto secant = [&](int i) { return (f(i + 1) - f(i)) / (x(i + 1) - x(i)); };
+  auto slope = [&](int i) {
+    if (i == 0) return secant(0);
+    if (i == k - 1) return secant(k - 2);
+    const double dl = secant(i - 1), dr = secant(i);
+    if (std::isnan(dl * dr)) return kNaN;
+    if (dl * dr <= 0.0) return 0.0;
+    const double hl = x(i) - x(i - 1), hr = x(i + 1) - x(i);
+    const double wl = 2.0 * hr + hl, wr = hr + 2.0 * hl;
+    return (wl + wr) / (wl / dl + wr / dr);
+  };
+  const int i1 = i0 + 1;
+  const double h = x(i1) - x(i0), t = (m - x(i0)) / h, t2 = t * t, t3 = t2 * t;
+  return (2.0 * t3 - 3.0 * t2 + 1.0) * f(i0) + (t3 - 2.0 * t2 + t) * h * slope(i0) +
+         (3.0 * t2 - 2.0 * t3) * f(i1) + (t3 - t2) * h * slope(i1);
+}
 
 // ---------------------------------------------------------------------------
 // EQ-QUERY-6: brackets and evaluation.
@@ -244,7 +277,8 @@ Bracket make_bracket(const std::vector<double>& axis, double q, bool extrapolate
   return b;
 }
 
-// Parameters of one grid node at a mean tension (piecewise linear in m, in the space).
+// Parameters of one grid node at a mean tension (EQ-QUERY-6: the chord between two stored
+// mean tensions, the monotone cubic with three or more; in the space).
 // No default member initialisers: a cell holds up to 32 of these, and
 // node_value() value-initialises the one it fills.
 struct NodeValue {
@@ -334,6 +368,23 @@ NodeValue node_value(const Group& g, const Node& node, double mean_lbf, Space s,
   v.ci_high = lerp(a.ci_high_kips, b.ci_high_kips);
   v.g_ci_low = s == Space::kLog ? lerp(a.ln_ci_low, b.ln_ci_low) : v.ci_low;
   v.g_ci_high = s == Space::kLog ? lerp(a.ln_ci_high, b.ln_ci_high) : v.ci_high;
+  // Between stored mean tensions of a node with three or more: the monotone
+  // cubic in m for u, beta and the interval's bounds (the catenary's and the
+  // slack's quantities keep the chord).
+  if (k >= 3 && !v.mean_extrapolated) {
+    auto cubic = [&](double chord, auto in) {
+      const double c = monotone_cubic_in_mean(pts, v.p0, mean_lbf, [&](int i) { return in(pts[i], s); });
+      return std::isfinite(c) ? c : chord;
+    };
+    v.g_u = cubic(v.g_u, u_in);
+    v.g_beta = cubic(v.g_beta, beta_in);
+    v.g_ci_low = cubic(v.g_ci_low, ci_low_in);
+    v.g_ci_high = cubic(v.g_ci_high, ci_high_in);
+    if (s == Space::kLinear) {
+      v.ci_low = v.g_ci_low;
+      v.ci_high = v.g_ci_high;
+    }
+  }
   return v;
 }
 

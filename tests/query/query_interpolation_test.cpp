@@ -26,6 +26,8 @@
 //   query-interp-18 heading profiles (EQ-QUERY-11): data equal to a smooth factor times a line's stored
 //                   profile are exact between stored headings, in log and linear space; a cell with a
 //                   corner without a profile is interpolated as before, never half corrected
+//   query-interp-19 a node's mean tensions (EQ-QUERY-6): the monotone cubic is close to a smooth function where
+//                   the chord is not, never overshoots a steep rise or a local maximum, and is the chord with two
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -862,6 +864,64 @@ TEST_F(QueryTest, HeadingProfilesMakeDataProportionalToThemExactBetweenHeadings)
   EXPECT_LT(free_heading.values.interpolation_error_kips, 1e-9 * free_heading.values.dynamic_999_kips);
   const QueryResult plain_heading = plain_db.query(request(5.0, 20.0, 84.4, 1000.0, m));
   EXPECT_GT(plain_heading.values.interpolation_error_kips, 0.1 * plain_heading.values.dynamic_999_kips);
+}
+
+// query-interp-19
+// One grid node (5 kt, 20 kt, 0 deg, 2,000 ft) with the mean tensions given and
+// u = u(m), beta = 5 kips.
+std::vector<SyntheticCase> one_node(const std::vector<double>& means_lbf, const std::function<double(double)>& u) {
+  std::vector<SyntheticCase> out;
+  for (double m : means_lbf) {
+    SyntheticCase c;
+    c.mean_tension_lbf = m;
+    c.u_kips = u(m);
+    c.alpha_per_kip = 0.2;
+    out.push_back(c);
+  }
+  return out;
+}
+
+TEST_F(QueryTest, MeanTensionsOfANodeAreJoinedByAMonotoneCubic) {
+  // EVIDENCE-OF: EQ-QUERY-6 (Fritsch & Carlson 1980 monotone cubic Hermite interpolation in m)
+  const std::vector<double> means = {20000.0, 40000.0, 60000.0, 80000.0};
+  auto u_at = [](Database& db, double m) { return db.query(request(5.0, 20.0, 0.0, 2000.0, m)).values.gumbel_u_kips; };
+
+  // A quadratic, u = c m^2 (m in kips, c = 0.01): the slopes at 40 and 60 kips are the harmonic means of the
+  // neighbouring secants, 2 / (1/60 + 1/100) c = 75 c and 2 / (1/100 + 1/140) c = 116.67 c, so mid-way
+  // u = 2,600 c + (20 / 8) (75 - 116.67) c = 2,495.83 c against 2,500 c: 4 % of the chord's error of 100 c.
+  constexpr double kC = 0.01;
+  auto quad = [](double m) { return kC * (m / 1000.0) * (m / 1000.0); };
+  Database qdb(write(one_node(means, quad), "quadratic.towdb"), TOWDB_QUERY_SPACE_LINEAR);
+  EXPECT_REL_CLOSE(u_at(qdb, 50000.0), (2600.0 + 2.5 * (75.0 - 2.0 / (1.0 / 100 + 1.0 / 140))) * kC, kRoundOffRelTol);
+  EXPECT_LT(std::abs(u_at(qdb, 50000.0) - quad(50000.0)), 0.05 * 100.0 * kC);
+  for (double m : means) EXPECT_EQ(u_at(qdb, m), quad(m));  // through every stored value
+
+  // A steep rise between 40 and 60 kips (slack giving way to snatch): monotone everywhere, inside each
+  // interval's two values, in both spaces; and a local maximum at 40 kips is never exceeded.
+  const std::vector<double> steep = {10.0, 11.0, 200.0, 210.0};
+  auto steep_u = [&](double m) { return steep[static_cast<std::size_t>(std::lround(m / 20000.0)) - 1]; };
+  const std::string steep_path = write(one_node(means, steep_u), "steep.towdb");
+  for (int space : {TOWDB_QUERY_SPACE_LINEAR, TOWDB_QUERY_SPACE_LOG}) {
+    Database db(steep_path, space);
+    double previous = 0.0;
+    for (double m = 20000.0; m <= 80000.0; m += 500.0) {
+      const double u = u_at(db, m);
+      const int i = std::min(2, static_cast<int>((m - 20000.0) / 20000.0));
+      EXPECT_GE(u, steep[i] * (1.0 - kRoundOffRelTol)) << space << " " << m;
+      EXPECT_LE(u, steep[i + 1] * (1.0 + kRoundOffRelTol)) << space << " " << m;
+      EXPECT_GE(u, previous * (1.0 - kRoundOffRelTol)) << space << " " << m;
+      previous = u;
+    }
+  }
+  const std::vector<double> peak = {10.0, 50.0, 20.0, 30.0};
+  auto peak_u = [&](double m) { return peak[static_cast<std::size_t>(std::lround(m / 20000.0)) - 1]; };
+  Database pdb(write(one_node(means, peak_u), "peak.towdb"), TOWDB_QUERY_SPACE_LINEAR);
+  for (double m = 20000.0; m <= 80000.0; m += 500.0) EXPECT_LE(u_at(pdb, m), 50.0 * (1.0 + kRoundOffRelTol)) << m;
+  EXPECT_GT(u_at(pdb, 30000.0), 30.0);  // the cubic, not the chord (30 at mid-interval), on the rising side
+
+  // Two stored mean tensions: the chord.
+  Database two(write(one_node({40000.0, 60000.0}, quad), "two.towdb"), TOWDB_QUERY_SPACE_LINEAR);
+  EXPECT_REL_CLOSE(u_at(two, 45000.0), 0.75 * quad(40000.0) + 0.25 * quad(60000.0), kRoundOffRelTol);
 }
 
 }  // namespace

@@ -32,9 +32,18 @@
  *               w_c = prod_a ((1 - t_a) or t_a),  t_a = (q_a - x_i)/(x_{i+1} - x_i).
  *             Mean tension is NOT a grid axis: each grid node has its own 1-4
  *             stored mean tensions m_1 < ... < m_n, and the node's parameters
- *             are interpolated piecewise-linearly in m at the query's mean
- *             tension before the corners are combined (at m itself, or at
- *             f T_calc,c on the relative axis of EQ-QUERY-9).
+ *             are interpolated in m at the query's mean tension before the
+ *             corners are combined (at m itself, or at f T_calc,c on the
+ *             relative axis of EQ-QUERY-9): with n >= 3 by the monotone
+ *             piecewise-cubic Hermite interpolant (Fritsch & Carlson 1980;
+ *             slopes: the weighted harmonic mean of the neighbouring
+ *             secants, 0 at a local extremum, the end secant at an end;
+ *             Fritsch & Butland 1984), with n = 2 linearly. It passes through
+ *             the stored values, is exact for data linear in m, and never
+ *             overshoots where the data are monotone (the rise of the tension
+ *             where a slack line starts to snatch); measured against direct
+ *             simulations it lowers the 90th-percentile error (docs/audit.md).
+ *             The catenary's and the slack's quantities stay linear in m.
  *             Interpolated quantities: g = u and g = beta, either as
  *               linear space: g = sum_c w_c g_c, or
  *               log space:    g = exp(sum_c w_c ln g_c);
@@ -63,8 +72,10 @@
  *             can change abruptly inside a cell, e.g. slack in exactly
  *             following seas only; the factor is calibrated by towdb audit,
  *             docs/audit.md). The estimate is
- *             summed over the axes and the mean tension. In log space f = ln x
- *             and the estimate is multiplied by x (dx = x d ln x).
+ *             summed over the axes and the mean tension (there it is the
+ *             chord's estimate, on the safe side: the cubic's error is
+ *             usually smaller). In log space f = ln x and the estimate is multiplied
+ *             by x (dx = x d ln x).
  *             Total uncertainty = sqrt(e^2 + c^2), c the stored confidence
  *             half-width (ci_high - ci_low)/2 of dynamic_999, scaled to
  *             (p, D) by the method-of-moments quantile standard error
@@ -85,8 +96,8 @@
  *             f = m / T_calc, which means the same at every node:
  *               T_calc(q) = exp(sum_c w_c ln T_calc,c)  (the cell's weights),
  *               f = m / T_calc(q)  (f = 1 when no mean tension is given),
- *             and node c is read at f T_calc,c, piecewise linearly in its
- *             stored mean tensions. A node refuses an f outside its stored
+ *             and node c is read at f T_calc,c between its stored mean
+ *             tensions as EQ-QUERY-6 says. A node refuses an f outside its stored
  *             factors unless extrapolation is asked for. Without stored
  *             T_calc the mean tension is absolute (the same m at every node).
  * EQ-QUERY-10 A sea given as Hs (optionally Tp) where the database holds
