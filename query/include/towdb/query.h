@@ -89,6 +89,10 @@
  *             relative error |x_pred - x_stored| / x_stored of the 0.001/day
  *             dynamic tension. This is the error at twice the grid spacing
  *             (about 4x the mid-cell error of EQ-QUERY-7 for smooth data).
+ *             Along the mean tensions the prediction is the two neighbours'
+ *             chord, not EQ-QUERY-6's cubic through the node's other values
+ *             (whose own leave-one-out, in docs/audit.md, is usually the
+ *             smaller).
  * EQ-QUERY-9  Mean-tension axis. Where every stored case carries the
  *             calculated mean tension T_calc of its own speed, wind and
  *             heading (cases.calculated_mean_tension_lbf, the sweep's
