@@ -38,9 +38,9 @@ constexpr double kMeasuredHeadingMedian[] = {0.825, 0.789, 1.102, 1.325};
 // Slack for a floor: the daily maxima of a 60-2,000-day nonlinear simulation
 // move in their last digits with the compiler and libm, which moves a case's
 // Type I fit by well under 1 % and these sample measures (187 cases) by a few
-// thousandths; a change of the physics moves them by hundredths or more
-// (docs/validation.md: every lead measured moved a heading median by 0.03 to
-// 3.4 and Spearman by 0.01 to 0.1).
+// thousandths; a change of the physics that matters moves them by hundredths
+// or more (docs/validation.md: the leads that moved the answers moved a
+// heading median by 0.03 to 3.4 and Spearman by 0.01 to 0.1).
 constexpr double kSpearmanSlack = 0.02;
 constexpr double kWithinSlack = 0.03;
 // The wire lines are 71 of the 187 cases: one case's rank moves more.
