@@ -33,6 +33,11 @@ std::string read_text(const std::filesystem::path& path) {
   return os.str();
 }
 
+std::string env_or(const char* name, const std::string& fallback) {
+  const char* v = std::getenv(name);
+  return v && *v ? std::string(v) : fallback;
+}
+
 ::testing::AssertionResult RelClose(double actual, double expected, RelTol tol) {
   const double scale = std::max(std::abs(actual), std::abs(expected));
   const double diff = std::abs(actual - expected);

@@ -37,6 +37,9 @@ void expect_input_error(const std::function<void()>& fn, const std::string& need
 // The whole content of a file, byte for byte ("" when it cannot be read).
 std::string read_text(const std::filesystem::path& path);
 
+// The environment variable `name`, or `fallback` when it is unset or empty.
+std::string env_or(const char* name, const std::string& fallback);
+
 // The comma-separated cells of each row of a test data file after its header
 // row; empty lines and lines starting with '#' (provenance notes) are skipped.
 // Throws std::runtime_error when the file cannot be opened.

@@ -49,11 +49,6 @@ constexpr double kWireSpearmanSlack = 0.03;
 // than 5 % of the ratio.
 constexpr double kLogMedianSlack = 0.05;
 
-std::string env_or(const char* name, const std::string& fallback) {
-  const char* v = std::getenv(name);
-  return v && *v ? std::string(v) : fallback;
-}
-
 TEST(ValidationAgreementFloor, TheChainKeepsItsMeasuredAgreementWithTheThesis) {
   // EVIDENCE-OF: issue 17 (the calibration measures as a floor), EQ-VALIDATION-2..4
   const auto table = source_dir() / "tests" / "data" / "validation" / "appendix_c_calibration.csv";

@@ -25,11 +25,6 @@
 namespace towdb::test {
 namespace {
 
-std::string env_or(const char* name, const std::string& fallback) {
-  const char* v = std::getenv(name);
-  return v && *v ? std::string(v) : fallback;
-}
-
 TEST(ValidationCalibrationRun, EveryThesisCaseHasAnOutcomeAndTheReportIsWritten) {
   // The repository's copy of the thesis table (tests/data/validation/README.md).
   const auto table = source_dir() / "tests" / "data" / "validation" / "appendix_c_calibration.csv";
