@@ -210,26 +210,49 @@ double ci_high_in(const MeanPoint& p, Space s) { return s == Space::kLog ? p.ln_
 // value, never leaves the range of an interval's two values where the data
 // are monotone, and is exact for f linear in m. NaN when a value it uses is
 // not finite (the caller then keeps the chord).
-template <class F>
-double monotone_cubic_in_mean(const std::vector<MeanPoint>& pts, int i0, double m, const F& f) {
-  const int k = static_cast<int>(pts.size());
-  auto x = [&](int i) { return pts[i].mean_lbf; };
-  auto secant = [&](int i) { return (f(i + 1) - f(i)) / (x(i + 1) - x(i)); };
-  auto slope = [&](int i) {
-    if (i == 0) return secant(0);
-    if (i == k - 1) return secant(k - 2);
-    const double dl = secant(i - 1), dr = secant(i);
+class MonotoneCubicInMean {
+ public:
+  // The interval [m_i0, m_i0+1] of the node's points and the query's m: the
+  // Hermite basis and the slopes' weights, shared by every quantity.
+  MonotoneCubicInMean(const std::vector<MeanPoint>& pts, int i0, double m)
+      : pts_(pts), k_(static_cast<int>(pts.size())), i0_(i0) {
+    h_ = x(i0 + 1) - x(i0);
+    const double t = (m - x(i0)) / h_, t2 = t * t, t3 = t2 * t;
+    h00_ = 2.0 * t3 - 3.0 * t2 + 1.0;
+    h10_ = (t3 - 2.0 * t2 + t) * h_;
+    h01_ = 3.0 * t2 - 2.0 * t3;
+    h11_ = (t3 - t2) * h_;
+  }
+
+  // The interpolated value of f(i) (the quantity at stored point i).
+  template <class F>
+  double operator()(const F& f) const {
+    const int i1 = i0_ + 1;
+    return h00_ * f(i0_) + h10_ * slope(i0_, f) + h01_ * f(i1) + h11_ * slope(i1, f);
+  }
+
+ private:
+  double x(int i) const { return pts_[i].mean_lbf; }
+  template <class F>
+  double secant(int i, const F& f) const {
+    return (f(i + 1) - f(i)) / (x(i + 1) - x(i));
+  }
+  template <class F>
+  double slope(int i, const F& f) const {
+    if (i == 0) return secant(0, f);
+    if (i == k_ - 1) return secant(k_ - 2, f);
+    const double dl = secant(i - 1, f), dr = secant(i, f);
     if (std::isnan(dl * dr)) return kNaN;
     if (dl * dr <= 0.0) return 0.0;
     const double hl = x(i) - x(i - 1), hr = x(i + 1) - x(i);
     const double wl = 2.0 * hr + hl, wr = hr + 2.0 * hl;
     return (wl + wr) / (wl / dl + wr / dr);
-  };
-  const int i1 = i0 + 1;
-  const double h = x(i1) - x(i0), t = (m - x(i0)) / h, t2 = t * t, t3 = t2 * t;
-  return (2.0 * t3 - 3.0 * t2 + 1.0) * f(i0) + (t3 - 2.0 * t2 + t) * h * slope(i0) +
-         (3.0 * t2 - 2.0 * t3) * f(i1) + (t3 - t2) * h * slope(i1);
-}
+  }
+
+  const std::vector<MeanPoint>& pts_;
+  int k_, i0_;
+  double h_, h00_, h10_, h01_, h11_;
+};
 
 // ---------------------------------------------------------------------------
 // EQ-QUERY-6: brackets and evaluation.
@@ -372,8 +395,9 @@ NodeValue node_value(const Group& g, const Node& node, double mean_lbf, Space s,
   // cubic in m for u, beta and the interval's bounds (the catenary's and the
   // slack's quantities keep the chord).
   if (k >= 3 && !v.mean_extrapolated) {
+    const MonotoneCubicInMean interpolant(pts, v.p0, mean_lbf);
     auto cubic = [&](double chord, auto in) {
-      const double c = monotone_cubic_in_mean(pts, v.p0, mean_lbf, [&](int i) { return in(pts[i], s); });
+      const double c = interpolant([&](int i) { return in(pts[i], s); });
       return std::isfinite(c) ? c : chord;
     };
     v.g_u = cubic(v.g_u, u_in);
