@@ -9,6 +9,7 @@
 #include "common/units.hpp"
 #include "store/key_bytes.hpp"
 #include "store/packed_days.hpp"
+#include "sweep/build/profile_stage.hpp"
 
 namespace towdb::sweep {
 
@@ -68,18 +69,8 @@ std::vector<Line> finished_lines(store::Database& db, const std::vector<CaseSpec
   return out;
 }
 
-// Points the line's cases at `profile_id` (NULL for 0).
 void point_cases(store::Database& db, const Line& line, std::int64_t profile_id) {
-  store::Statement st = db.prepare("UPDATE cases SET profile_id = ? WHERE case_id = ? AND profile_id IS NOT ?");
-  for (std::int64_t id : line.case_ids) {
-    st.reset();
-    if (profile_id == 0) {
-      st.bind_null(1).bind(2, id).bind_null(3);
-    } else {
-      st.bind(1, profile_id).bind(2, id).bind(3, profile_id);
-    }
-    st.run();
-  }
+  point_cases_at(db, "profile_id", line.case_ids, profile_id);
 }
 
 // The strip-theory responses dominate a profile's cost (two vessels, two
@@ -112,9 +103,23 @@ void warm_responses(const std::vector<Line>& lines, const std::vector<std::size_
   });
 }
 
+// The line's profile [kips], checked finite and > 0, packed as binary32.
+std::string compute_profile(const Line& line, const std::vector<CaseSpec>& cases, const io::ShipCatalog& catalog,
+                            const HeadingProfileFn& profile, const std::vector<double>& headings) {
+  std::vector<double> sigma_kips;
+  for (double n : profile(cases[line.members.front()], catalog, headings)) {
+    const double s = units::n_to_kips(n);
+    if (!(s > 0.0 && std::isfinite(s))) {
+      throw NumericalError("linear dynamic-tension sigma " + format_value(s) + " kips; allowed: finite, > 0");
+    }
+    sigma_kips.push_back(s);
+  }
+  return store::pack_float32(sigma_kips);
+}
+
 // Stores one line's profile and points its cases at it.
-void write_profile(store::Database& db, const Line& line, double mean_tension_lbf,
-                   const std::vector<double>& sigma_kips, std::int64_t build_id) {
+void write_profile(store::Database& db, const Line& line, double mean_tension_lbf, const std::string& sigma_f32,
+                   std::int64_t build_id) {
   store::Statement insert = db.prepare(
       "INSERT INTO heading_profiles (profile_key, mean_tension_lbf, heading_first_deg, heading_step_deg, "
       "headings, sigma_kips_f32, build_id) VALUES (?, ?, ?, ?, ?, ?, ?)");
@@ -123,7 +128,7 @@ void write_profile(store::Database& db, const Line& line, double mean_tension_lb
       .bind(3, 0.0)
       .bind(4, kProfileStepDeg)
       .bind(5, kProfileHeadings)
-      .bind_blob(6, store::pack_float32(sigma_kips))
+      .bind_blob(6, sigma_f32)
       .bind(7, build_id);
   insert.run();
   point_cases(db, line, db.last_insert_rowid());
@@ -157,48 +162,18 @@ ProfileSummary update_heading_profiles(store::Database& db, const std::vector<Ca
   warm_responses(lines, work, cases, catalog, profile, headings, threads, stop);
   // Lines in the order of their vessels and speeds (std::map's order above),
   // so the strip-theory responses each computes are reused while cached.
-  // Computed a chunk at a time in parallel and written in line order: the
-  // rows (profile_id included) do not depend on the thread count, and a
-  // killed build keeps every chunk written before.
-  constexpr std::size_t kChunk = 32;
-  for (std::size_t begin = 0; begin < work.size() && !summary.interrupted; begin += kChunk) {
-    if (stop && stop->load()) {
-      summary.interrupted = true;
-      break;
-    }
-    const std::size_t end = std::min(work.size(), begin + kChunk);
-    std::vector<std::vector<double>> sigma_kips(end - begin);
-    std::vector<std::string> failure(end - begin);
-    parallel_for(static_cast<std::int64_t>(begin), static_cast<std::int64_t>(end), threads, [&](std::int64_t w) {
-      const auto k = static_cast<std::size_t>(w) - begin;
-      const Line& line = lines[work[static_cast<std::size_t>(w)]];
-      try {
-        for (double n : profile(cases[line.members.front()], catalog, headings)) {
-          const double s = units::n_to_kips(n);
-          if (!(s > 0.0 && std::isfinite(s))) {
-            throw NumericalError("linear dynamic-tension sigma " + format_value(s) + " kips; allowed: finite, > 0");
-          }
-          sigma_kips[k].push_back(s);
-        }
-      } catch (const std::exception& e) {
-        failure[k] = e.what();
-      }
-    });
-    for (std::size_t w = begin; w < end; ++w) {
-      const std::size_t k = w - begin;
-      const Line& line = lines[work[w]];
-      if (!failure[k].empty()) {
-        ++summary.failed;
-        summary.failures.push_back(line.name + " (first case_id " + std::to_string(line.case_ids.front()) +
-                                   "): " + failure[k]);
-        db.transaction([&] { point_cases(db, line, 0); });
-        continue;
-      }
-      db.transaction([&] { write_profile(db, line, cases[line.members.front()].mean_tension_lbf, sigma_kips[k], build_id); });
-      ++summary.computed;
-    }
-  }
-  std::sort(summary.failures.begin(), summary.failures.end());
+  StageWork stage;
+  stage.count = work.size();
+  stage.compute = [&](std::size_t w) { return compute_profile(lines[work[w]], cases, catalog, profile, headings); };
+  stage.write = [&](std::size_t w, const std::string& blob) {
+    const Line& line = lines[work[w]];
+    write_profile(db, line, cases[line.members.front()].mean_tension_lbf, blob, build_id);
+  };
+  stage.clear = [&](std::size_t w) { point_cases(db, lines[work[w]], 0); };
+  stage.name = [&](std::size_t w) {
+    return lines[work[w]].name + " (first case_id " + std::to_string(lines[work[w]].case_ids.front()) + ")";
+  };
+  run_stage_chunks(db, stage, threads, stop, summary);
   db.exec(
       "DELETE FROM heading_profiles WHERE profile_id NOT IN "
       "(SELECT profile_id FROM cases WHERE profile_id IS NOT NULL)");

@@ -1,0 +1,42 @@
+// What the heading-profile (EQ-SWEEP-8) and speed-profile (EQ-SWEEP-9) stages
+// share: pointing a line's cases at their profile row, and computing the
+// lines to do a chunk at a time in parallel while writing them in order (so
+// the rows do not depend on the thread count, and a killed build keeps every
+// chunk written before).
+#ifndef TOWDB_SWEEP_PROFILE_STAGE_HPP
+#define TOWDB_SWEEP_PROFILE_STAGE_HPP
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "store/database.hpp"
+#include "sweep/build/profiles.hpp"
+
+namespace towdb::sweep {
+
+// Sets `column` (profile_id or speed_profile_id) of the cases to
+// `profile_id` (NULL for 0), touching only rows that change.
+void point_cases_at(store::Database& db, const char* column, const std::vector<std::int64_t>& case_ids,
+                    std::int64_t profile_id);
+
+// One stage's work: `count` lines, computed by `compute(i)` (the row's packed
+// values; throws on failure) in parallel chunks, each stored by `write(i,
+// blob)` in its own transaction in line order. A failure is counted in
+// `summary` with `name(i)` and `clear(i)` runs in a transaction instead. A
+// stop request between chunks sets summary.interrupted.
+struct StageWork {
+  std::size_t count = 0;
+  std::function<std::string(std::size_t)> compute;
+  std::function<void(std::size_t, const std::string&)> write;
+  std::function<void(std::size_t)> clear;
+  std::function<std::string(std::size_t)> name;
+};
+void run_stage_chunks(store::Database& db, const StageWork& work, int threads, const std::atomic<bool>* stop,
+                      ProfileSummary& summary);
+
+}  // namespace towdb::sweep
+
+#endif  // TOWDB_SWEEP_PROFILE_STAGE_HPP
