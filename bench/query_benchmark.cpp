@@ -2,7 +2,7 @@
 // the C API on one core. Target (issue "Query engine for tow planners"):
 // >= 100,000 queries/s. The database is synthetic, thesis-sized: 4 speeds x
 // 3 winds x 7 headings x 4 lengths x 2-4 mean tensions = 1008 cases (with and
-// without heading profiles), with
+// without heading and speed profiles), with
 // Gumbel parameters from exp(linear) functions (tests/query/synthetic_db.hpp).
 // The sum of the answers is printed as a counter ("checksum") so that two
 // builds can be compared for identical results (after SQLite's speedtest1).
@@ -28,8 +28,8 @@ struct Fixture {
 
   // relative: every case stores its node's calculated mean tension and the
   // questions ask at the default, factor 1 of it (query.h EQ-QUERY-9).
-  // profiles: every line also has a heading profile (EQ-QUERY-11), as in the
-  // bundled database.
+  // profiles: every line also has a heading profile (EQ-QUERY-11) and a speed
+  // profile (EQ-QUERY-12), as in the bundled database.
   Fixture(bool relative, bool profiles) {
     path = std::filesystem::temp_directory_path() /
            ("towdb-bench-" + std::to_string(::getpid()) + (relative ? "-relative" : "") +
@@ -48,6 +48,9 @@ struct Fixture {
       std::vector<double> sigma;
       for (int j = 0; j < 73; ++j) sigma.push_back(10.0 - 8.0 * std::cos((2.5 * j - 84.0) * 3.14159265358979 / 30.0));
       towdb::test::write_heading_profiles(path, sigma);
+      std::vector<double> by_speed;  // 3 to 9 kt every 0.25 kt
+      for (int j = 0; j < 25; ++j) by_speed.push_back(10.0 - 8.0 * std::cos((0.25 * j - 3.1) * 3.14159265358979 / 0.6));
+      towdb::test::write_speed_profiles(path, by_speed, 3.0, 0.25);
     }
     if (towdb_query_open(path.c_str(), TOWDB_QUERY_SPACE_AUTO, &db) != TOWDB_QUERY_OK) std::abort();
     std::mt19937 rng(2024);
@@ -74,8 +77,8 @@ struct Fixture {
 };
 
 // kind: 0 absolute mean-tension axis at a given tension, 1 the relative axis
-// (EQ-QUERY-9) at the default calculated tension, 2 the same with heading
-// profiles (EQ-QUERY-11).
+// (EQ-QUERY-9) at the default calculated tension, 2 the same with heading and
+// speed profiles (EQ-QUERY-11, 12).
 Fixture& fixture(int kind) {
   static Fixture absolute_fixture(false, false);
   static Fixture relative_fixture(true, false);

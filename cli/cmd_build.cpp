@@ -198,12 +198,14 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
   o.skipped = exp.skipped;
   o.lowest_elevation_m = sweep::static_lowest_elevation(build_case_options());
   o.heading_profile = sweep::linear_heading_profile(build_case_options());
+  o.speed_profile = sweep::linear_speed_profile(build_case_options());
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
   const sweep::BuildSummary s = sweep::run_build(a.db, file, exp.cases, catalog, *runner, o);
   if (s.worker) return 0;
   for (const auto& f : s.failures) std::cerr << "towdb: case failed: " << f << "\n";
   for (const auto& f : s.profiles.failures) std::cerr << "towdb: heading profile failed: " << f << "\n";
+  for (const auto& f : s.speed_profiles.failures) std::cerr << "towdb: speed profile failed: " << f << "\n";
   for (const auto& k : exp.skipped) {
     std::cerr << "towdb: condition skipped: " << k.sweep_label << " " << k.tug << " / " << k.tow << " at "
               << fmt(k.nominal_speed_kt) << " kt, " << k.sea << ", heading " << fmt(k.heading_deg)
@@ -230,8 +232,12 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
     std::cout << "; heading profiles: " << s.profiles.lines << " lines, " << s.profiles.up_to_date << " up to date, "
               << s.profiles.computed << " computed, " << s.profiles.failed << " failed";
   }
+  if (s.speed_profiles.lines > 0) {
+    std::cout << "; speed profiles: " << s.speed_profiles.lines << " lines, " << s.speed_profiles.up_to_date
+              << " up to date, " << s.speed_profiles.computed << " computed, " << s.speed_profiles.failed << " failed";
+  }
   std::cout << (s.interrupted ? "; interrupted (run again with the same command to continue)" : "") << "\n";
-  return (s.failed > 0 || s.profiles.failed > 0 || s.interrupted) ? 1 : 0;
+  return (s.failed > 0 || s.profiles.failed > 0 || s.speed_profiles.failed > 0 || s.interrupted) ? 1 : 0;
 }
 
 // meta.last_audit as JSON (null when the database was never audited).
@@ -280,6 +286,8 @@ int run_status(const std::string& db, bool json) {
     j["towline_fits"] = r.towline_fits;
     j["heading_profiles"] = r.heading_profiles;
     j["cases_with_heading_profile"] = r.cases_with_profile;
+    j["speed_profiles"] = r.speed_profiles;
+    j["cases_with_speed_profile"] = r.cases_with_speed_profile;
     j["vessels"] = r.vessels;
     if (r.total_runtime_s) j["total_runtime_s"] = *r.total_runtime_s;
     j["builds"] = ordered_json::array();
@@ -305,7 +313,8 @@ int run_status(const std::string& db, bool json) {
   std::cout << "\nresults: " << r.results << ", daily maxima: " << r.daily_maxima
             << ", towline fits: " << r.towline_fits << ", vessels: " << r.vessels
             << "\nheading profiles (query EQ-QUERY-11): " << r.heading_profiles << ", used by " << r.cases_with_profile
-            << " cases";
+            << " cases\nspeed profiles (query EQ-QUERY-12): " << r.speed_profiles << ", used by "
+            << r.cases_with_speed_profile << " cases";
   if (r.total_runtime_s) std::cout << ", computing time: " << fmt(*r.total_runtime_s / 3600.0, 2) << " h";
   std::cout << "\n\nsweep labels\n";
   TextTable labels({"sweep label", "cases"});

@@ -27,18 +27,20 @@ struct CaseRec {
   double calc_lbf = kNaN;  // EQ-QUERY-9 T_calc of the case (NaN when not stored)
   int days = 0;
   double u_kips = kNaN, beta_kips = kNaN, dynamic_999_kips = kNaN;
-  std::int64_t profile_id = 0;  // EQ-QUERY-11: heading_profiles row of its line (0: none)
+  std::int64_t profile_id = 0;        // EQ-QUERY-11: heading_profiles row of its line (0: none)
+  std::int64_t speed_profile_id = 0;  // EQ-QUERY-12: speed_profiles row of its line (0: none)
 };
 
-// EQ-QUERY-11: a line's linear heading profile, ln sigma on a uniform grid.
-struct HeadingProfile {
-  double first_deg = 0.0, step_deg = 1.0;
+// EQ-QUERY-11/12: a line's linear profile along heading [deg] or speed [kt],
+// ln sigma on a uniform grid.
+struct LinearProfile {
+  double first = 0.0, step = 1.0;
   std::vector<double> ln_sigma;
 
-  // ln sigma at heading h [deg, 0..180], linear between grid points, the end
+  // ln sigma at a heading or speed, linear between grid points, the end
   // values beyond the grid.
-  double ln_at(double h) const {
-    const double x = (h - first_deg) / step_deg;
+  double ln_at(double v) const {
+    const double x = (v - first) / step;
     const double last = static_cast<double>(ln_sigma.size() - 1);
     if (!(x > 0.0)) return ln_sigma.front();
     if (x >= last) return ln_sigma.back();
@@ -60,6 +62,7 @@ struct MeanPoint {
   double lowest_ft = kNaN;  // its lowest point above the waterline (NaN: not stored)
   bool above_bs = false;
   int profile = -1;  // EQ-QUERY-11: index into Group::profiles, -1 when its cases have none (or differ)
+  int speed_profile = -1;  // EQ-QUERY-12: index into Group::speed_profiles, likewise
   std::vector<int> cases;  // indices into Group::cases
 };
 
@@ -80,7 +83,8 @@ struct Group {
   std::vector<int> node_at;  // flat grid index -> node, -1 where no case is stored
   std::vector<Node> nodes;
   std::vector<CaseRec> cases;
-  std::vector<HeadingProfile> profiles;  // EQ-QUERY-11: those its mean points use
+  std::vector<LinearProfile> profiles;        // EQ-QUERY-11: the heading profiles its mean points use
+  std::vector<LinearProfile> speed_profiles;  // EQ-QUERY-12: the speed profiles its mean points use
 
   int node_index(const std::array<int, kGridAxes>& idx) const {
     std::size_t flat = 0;
@@ -447,6 +451,7 @@ struct Evaluation {
   double bs_min = 0.0, bs_max = 0.0;
   bool above_bs = false, mean_extrapolated = false;
   bool heading_profiled = false;  // EQ-QUERY-11: the corners were moved along their heading profiles
+  bool speed_profiled = false;    // EQ-QUERY-12: ... and along their speed profiles
   int missing = 0;
   std::array<int, kGridAxes> active{};
   int active_count = 0;
@@ -464,32 +469,34 @@ struct MeanTarget {
   // along their profiles to this heading (the error estimate's pinned
   // evaluations; NaN: leave them at the stored heading).
   double heading_deg = kNaN;
+  double speed_kt = kNaN;  // EQ-QUERY-12: the same along speed
 };
 
-// EQ-QUERY-11: moves each corner's value from its node's heading h_c to the
-// query's heading h_q along its line's linear profile, ln x += ln sigma(h_q)
-// - ln sigma(h_c) (u, beta and the interval scale together), so that the
-// multilinear weights interpolate x / sigma across the heading cell instead of
-// x. Every corner must have a profile (else nothing moves): a cell is never
-// half corrected.
-void shift_along_heading(const Group& g, double hq, Space s, Evaluation* ev, int n_corners) {
-  if (g.profiles.empty()) return;
-  const auto& axis = g.axis[kHeading];
+// EQ-QUERY-11/12: moves each corner's value from its node's coordinate x_c
+// on `axis` (heading or speed) to the query's x_q along its line's linear
+// profile (`slot` of its mean points into `profiles`), ln x += ln sigma(x_q)
+// - ln sigma(x_c) (u, beta and the interval scale together), so that the
+// multilinear weights interpolate x / sigma across the cell instead of x.
+// Every corner must have a profile (else nothing moves, false): a cell is
+// never half corrected.
+bool shift_along(const Group& g, int axis, double xq, int MeanPoint::*slot, const std::vector<LinearProfile>& profiles,
+                 Space s, Evaluation* ev, int n_corners) {
+  if (profiles.empty()) return false;
   for (int mask = 0; mask < n_corners; ++mask) {
     const Corner& c = ev->corners[mask];
     if (c.node < 0) continue;
     const auto& pts = g.nodes[c.node].points;
-    if (pts[c.value.p0].profile < 0 || pts[c.value.p1].profile < 0) return;
+    if (pts[c.value.p0].*slot < 0 || pts[c.value.p1].*slot < 0) return false;
   }
   for (int mask = 0; mask < n_corners; ++mask) {
     Corner& c = ev->corners[mask];
     if (c.node < 0) continue;
     const auto& pts = g.nodes[c.node].points;
-    const double hc = axis[c.idx[kHeading]];
+    const double xc = g.axis[axis][c.idx[axis]];
     NodeValue& v = c.value;
     auto shift_of = [&](int p) {
-      const HeadingProfile& prof = g.profiles[pts[p].profile];
-      return prof.ln_at(hq) - prof.ln_at(hc);
+      const LinearProfile& prof = profiles[pts[p].*slot];
+      return prof.ln_at(xq) - prof.ln_at(xc);
     };
     const double shift = v.p0 == v.p1 ? shift_of(v.p0) : (1.0 - v.t) * shift_of(v.p0) + v.t * shift_of(v.p1);
     const double f = std::exp(shift);
@@ -509,7 +516,15 @@ void shift_along_heading(const Group& g, double hq, Space s, Evaluation* ev, int
     v.ci_low *= f;
     v.ci_high *= f;
   }
-  ev->heading_profiled = true;
+  return true;
+}
+
+// The query's coordinate on `axis` inside its cell, else (the axis pinned to
+// a stored value) the error estimate's target `pinned` (NaN: none).
+double cell_coordinate(const Group& g, const Brackets& br, int axis, double pinned) {
+  const Bracket& b = br[axis];
+  const auto& ax = g.axis[axis];
+  return b.i0 != b.i1 ? (1.0 - b.t) * ax[b.i0] + b.t * ax[b.i1] : pinned;
 }
 
 void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Space s, bool extrapolate,
@@ -577,11 +592,12 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
     const double m = g.relative ? ev->factor * node.calc_lbf : target.mean_lbf;
     c.value = node_value(g, node, m, s, extrapolate);
   }
-  ev->heading_profiled = false;
-  const Bracket& bh = br[kHeading];
-  const auto& headings = g.axis[kHeading];
-  const double hq = bh.i0 != bh.i1 ? (1.0 - bh.t) * headings[bh.i0] + bh.t * headings[bh.i1] : target.heading_deg;
-  if (std::isfinite(hq)) shift_along_heading(g, hq, s, ev, n_corners);
+  const double hq = cell_coordinate(g, br, kHeading, target.heading_deg);
+  const double vq = cell_coordinate(g, br, kSpeed, target.speed_kt);
+  ev->heading_profiled =
+      std::isfinite(hq) && shift_along(g, kHeading, hq, &MeanPoint::profile, g.profiles, s, ev, n_corners);
+  ev->speed_profiled =
+      std::isfinite(vq) && shift_along(g, kSpeed, vq, &MeanPoint::speed_profile, g.speed_profiles, s, ev, n_corners);
   double gu = 0.0, gb = 0.0, g_lo = 0.0, g_hi = 0.0;
   ev->mean_lbf = ev->slack = ev->sag_ft = ev->lowest_ft = ev->ci_low = ev->ci_high = 0.0;
   ev->bs_min = std::numeric_limits<double>::infinity();
@@ -711,20 +727,22 @@ double interpolation_error_kips(const Group& g, const Brackets& br, const Evalua
     const int a = ev.active[j];
     const auto& ax = g.axis[a];
     // The whole cell re-evaluated with this axis pinned to stored index i.
-    // Along heading, when the answer used the profiles (EQ-QUERY-11), each
-    // pinned evaluation is moved to the query's heading too: the estimate
-    // then measures how x / sigma changes between the stored headings (a
-    // value that could not be moved is not available).
+    // Along heading or speed, when the answer used the profiles (EQ-QUERY-11,
+    // 12), each pinned evaluation is moved to the query's heading or speed
+    // too: the estimate then measures how x / sigma changes between the
+    // stored values (a value that could not be moved is not available).
     MeanTarget at = target;
-    const bool moved = a == kHeading && ev.heading_profiled;
-    if (moved) at.heading_deg = (1.0 - br[a].t) * ax[br[a].i0] + br[a].t * ax[br[a].i1];
+    const bool moved = (a == kHeading && ev.heading_profiled) || (a == kSpeed && ev.speed_profiled);
+    const double xq = (1.0 - br[a].t) * ax[br[a].i0] + br[a].t * ax[br[a].i1];
+    if (moved && a == kHeading) at.heading_deg = xq;
+    if (moved && a == kSpeed) at.speed_kt = xq;
     auto f_at = [&](int i) {
       Brackets pinned = br;
       pinned[a] = Bracket{i, i, 0.0, false};
       Evaluation e2;
       try {
         evaluate(g, pinned, at, s, ex, &e2);
-        if (moved && !e2.heading_profiled) return kNaN;
+        if (moved && !(a == kHeading ? e2.heading_profiled : e2.speed_profiled)) return kNaN;
         return g_of(e2.u + e2.beta * c);
       } catch (const InputError&) {
         return kNaN;
@@ -948,7 +966,7 @@ void read_rows(store::Database& db, const std::filesystem::path& path, LoadedRow
       "c.tp_s, c.gamma, c.swell_hs_ft, c.heading_deg, c.length_ft, c.mean_tension_lbf, c.days, "
       "r.gumbel_u_kips, r.gumbel_alpha_per_kip, r.dynamic_999_kips, r.ci_level, r.ci_low_kips, r.ci_high_kips, "
       "r.breaking_strength_lbf, r.above_breaking_strength, r.slack_fraction, c.calculated_mean_tension_lbf, "
-      "f.sag_ft, f.lowest_elevation_ft, c.profile_id FROM cases c JOIN results r ON r.case_id = c.case_id "
+      "f.sag_ft, f.lowest_elevation_ft, c.profile_id, c.speed_profile_id FROM cases c JOIN results r ON r.case_id = c.case_id "
       "LEFT JOIN towline_fits f ON f.fit_id = c.fit_id WHERE c.status = 'done' ORDER BY c.case_id");
   while (st.step()) {
     Row r;
@@ -983,6 +1001,7 @@ void read_rows(store::Database& db, const std::filesystem::path& path, LoadedRow
     r.sag_ft = st.column_optional_double(25).value_or(kNaN);
     r.lowest_ft = st.column_optional_double(26).value_or(kNaN);
     r.rec.profile_id = st.is_null(27) ? 0 : st.column_int(27);
+    r.rec.speed_profile_id = st.is_null(28) ? 0 : st.column_int(28);
     r.rec.beta_kips = 1.0 / alpha;
     const auto key = std::make_tuple(tug, tow, line, (wind ? "wind:" : "hs:") + family);
     auto [it, inserted] = group_of.try_emplace(key, out->groups.size());
@@ -1002,60 +1021,85 @@ void read_rows(store::Database& db, const std::filesystem::path& path, LoadedRow
   }
 }
 
-// EQ-QUERY-11: every stored heading profile by profile_id. A profile longer
-// than a heading every 0.01 deg is not one a build writes.
-constexpr std::int64_t kMaxProfileHeadings = 18001;
-std::map<std::int64_t, HeadingProfile> read_profiles(store::Database& db, const std::filesystem::path& path) {
-  std::map<std::int64_t, HeadingProfile> out;
-  store::Statement st = db.prepare(
-      "SELECT profile_id, heading_first_deg, heading_step_deg, headings, sigma_kips_f32 FROM heading_profiles");
+// EQ-QUERY-11/12: one kind of stored profile, as read_profiles checks it.
+struct ProfileTable {
+  const char* sql;     // id, first, step, count, blob
+  const char* table;   // for messages
+  const char* id;      // the id column
+  const char* coordinate, *points, *unit;  // "heading", "headings", "deg"
+  const char* blob;    // the blob column
+  double first_max;    // first in (0 or above, first_max]
+  bool first_positive; // first > 0 (speeds) rather than >= 0 (headings)
+  std::int64_t max_points;
+  int bytes;  // a value: 4 binary32, 2 binary16
+};
+
+// A profile longer than a heading every 0.01 deg, or a speed every 0.001 kt
+// over 100 kt, is not one a build writes.
+const ProfileTable kHeadingProfiles{
+    "SELECT profile_id, heading_first_deg, heading_step_deg, headings, sigma_kips_f32 FROM heading_profiles",
+    "heading_profiles", "profile_id", "heading", "headings", "deg", "sigma_kips_f32", 180.0, false, 18001, 4};
+const ProfileTable kSpeedProfiles{
+    "SELECT speed_profile_id, speed_first_kt, speed_step_kt, speeds, sigma_kips_f16 FROM speed_profiles",
+    "speed_profiles", "speed_profile_id", "speed", "speeds", "kt", "sigma_kips_f16", 100.0, true, 100001, 2};
+
+// Every stored profile of one kind by its id, each checked.
+std::map<std::int64_t, LinearProfile> read_profiles(store::Database& db, const std::filesystem::path& path,
+                                                    const ProfileTable& t) {
+  std::map<std::int64_t, LinearProfile> out;
+  store::Statement st = db.prepare(t.sql);
   while (st.step()) {
     const std::int64_t id = st.column_int(0);
-    HeadingProfile p;
-    p.first_deg = st.column_double(1);
-    p.step_deg = st.column_double(2);
-    const std::int64_t headings = st.column_int(3);
+    LinearProfile p;
+    p.first = st.column_double(1);
+    p.step = st.column_double(2);
+    const std::int64_t count = st.column_int(3);
     const std::string blob = st.column_blob(4);
-    const std::string row = path.string() + ": heading_profiles row " + std::to_string(id);
-    if (!(p.step_deg > 0.0 && std::isfinite(p.step_deg)) || !(p.first_deg >= 0.0 && p.first_deg <= 180.0) ||
-        headings < 2 || headings > kMaxProfileHeadings) {
-      throw DatabaseError(row + " has first heading " + format_value(p.first_deg) + " deg, step " +
-                          format_value(p.step_deg) + " deg and " + std::to_string(headings) +
-                          " headings; allowed: first in [0, 180], a finite step > 0 and 2 to " +
-                          std::to_string(kMaxProfileHeadings) + " headings");
+    const std::string row = path.string() + ": " + t.table + " row " + std::to_string(id);
+    const bool first_ok = (t.first_positive ? p.first > 0.0 : p.first >= 0.0) && p.first <= t.first_max;
+    if (!(p.step > 0.0 && std::isfinite(p.step)) || !first_ok || count < 2 || count > t.max_points) {
+      throw DatabaseError(row + " has first " + t.coordinate + " " + format_value(p.first) + " " + t.unit +
+                          ", step " + format_value(p.step) + " " + t.unit + " and " + std::to_string(count) + " " +
+                          t.points + "; allowed: first in " + (t.first_positive ? "(0, " : "[0, ") +
+                          format_value(t.first_max) + "], a finite step > 0 and 2 to " +
+                          std::to_string(t.max_points) + " " + t.points);
     }
-    const auto n = static_cast<std::size_t>(headings);
-    if (blob.size() != 4 * n) {
-      throw DatabaseError(row + ": sigma_kips_f32 holds " + std::to_string(blob.size()) + " bytes; expected 4 x " +
-                          std::to_string(n) + " headings");
+    const auto n = static_cast<std::size_t>(count);
+    if (blob.size() != static_cast<std::size_t>(t.bytes) * n) {
+      throw DatabaseError(row + ": " + t.blob + " holds " + std::to_string(blob.size()) + " bytes; expected " +
+                          std::to_string(t.bytes) + " x " + std::to_string(n) + " " + t.points);
     }
-    const std::string field = "heading_profiles.sigma_kips_f32 of profile_id " + std::to_string(id);
-    for (double sigma : store::unpack_float32(blob, n, field)) {
-      if (!(sigma > 0.0 && std::isfinite(sigma))) {
-        throw DatabaseError(path.string() + ": " + field + " holds " + format_value(sigma) +
+    const std::string field = std::string(t.table) + "." + t.blob + " of " + t.id + " " + std::to_string(id);
+    const std::vector<double> sigma =
+        t.bytes == 4 ? store::unpack_float32(blob, n, field) : store::unpack_float16(blob, n, field);
+    for (double v : sigma) {
+      if (!(v > 0.0 && std::isfinite(v))) {
+        throw DatabaseError(path.string() + ": " + field + " holds " + format_value(v) +
                             " kips; allowed: finite and > 0");
       }
-      p.ln_sigma.push_back(std::log(sigma));
+      p.ln_sigma.push_back(std::log(v));
     }
     out.emplace(id, std::move(p));
   }
   return out;
 }
 
-// EQ-QUERY-11: a mean point uses its cases' profile when they all have the
-// same one (merged duplicates such as h and 360 - h share their line's).
-void assign_profiles(Group& g, const std::map<std::int64_t, HeadingProfile>& stored) {
+// EQ-QUERY-11/12: a mean point uses its cases' profile (`id` of CaseRec,
+// into `slot`) when they all have the same one (merged duplicates such as h
+// and 360 - h share their line's).
+void assign_profiles(Group& g, const std::map<std::int64_t, LinearProfile>& stored, std::int64_t CaseRec::*id_of,
+                     int MeanPoint::*slot, std::vector<LinearProfile> Group::*used) {
   std::map<std::int64_t, int> index;
   for (Node& node : g.nodes) {
     for (MeanPoint& p : node.points) {
-      const std::int64_t id = g.cases[p.cases.front()].profile_id;
+      const std::int64_t id = g.cases[p.cases.front()].*id_of;
       const bool shared = std::all_of(p.cases.begin(), p.cases.end(),
-                                      [&](int ci) { return g.cases[ci].profile_id == id; });
+                                      [&](int ci) { return g.cases[ci].*id_of == id; });
       const auto it = stored.find(id);
       if (id == 0 || !shared || it == stored.end()) continue;
-      auto [at, inserted] = index.try_emplace(id, static_cast<int>(g.profiles.size()));
-      if (inserted) g.profiles.push_back(it->second);
-      p.profile = at->second;
+      auto [at, inserted] = index.try_emplace(id, static_cast<int>((g.*used).size()));
+      if (inserted) (g.*used).push_back(it->second);
+      p.*slot = at->second;
     }
   }
 }
@@ -1166,11 +1210,12 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
   Engine e;
   e.options_ = options;
   LoadedRows loaded;
-  std::map<std::int64_t, HeadingProfile> profiles;
+  std::map<std::int64_t, LinearProfile> profiles, speed_profiles;
   try {
     store::Database db = store::Database::open(path, store::Database::Mode::kReadOnly);
     read_rows(db, path, &loaded);
-    profiles = read_profiles(db, path);
+    profiles = read_profiles(db, path, kHeadingProfiles);
+    speed_profiles = read_profiles(db, path, kSpeedProfiles);
     e.coverage_ = load_coverage_notes(db);
   } catch (const DatabaseError&) {
     throw;
@@ -1188,7 +1233,8 @@ Engine Engine::open(const std::filesystem::path& path, Space space, QueryOptions
     Group& g = e.groups_[gi];
     build_grid(g, loaded.rows[gi]);
     merge_points(g, loaded.rows[gi], &e.log_ok_);
-    assign_profiles(g, profiles);
+    assign_profiles(g, profiles, &CaseRec::profile_id, &MeanPoint::profile, &Group::profiles);
+    assign_profiles(g, speed_profiles, &CaseRec::speed_profile_id, &MeanPoint::speed_profile, &Group::speed_profiles);
     assign_calculated(g);
     e.case_count_ += static_cast<int>(g.cases.size());
   }

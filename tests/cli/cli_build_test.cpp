@@ -253,12 +253,15 @@ TEST(CliBuild, StatusSummarisesABuild) {  // cli-build-4
   EXPECT_EQ(doc.at("results").get<int>(), 17);
   EXPECT_EQ(doc.at("builds").size(), 1u);
   EXPECT_EQ(doc.at("builds")[0].at("status").get<std::string>(), "completed");
+  EXPECT_EQ(doc.at("speed_profiles").get<int>(), 0);  // one speed in the small sweep: no line along speed
+  EXPECT_EQ(doc.at("cases_with_speed_profile").get<int>(), 0);
   ASSERT_EQ(doc.at("failed_cases").size(), 1u);
   EXPECT_EQ(doc.at("failed_cases")[0].at("sweep_label").get<std::string>(), "explicit-1");
   const CommandResult t = run_towdb("status --db '" + db.string() + "'");
   ASSERT_EQ(t.exit_code, 0) << t.err;
   EXPECT_NE(t.out.find("cases: 18, 17 done, 1 failed, 0 pending, 0 running"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("catenary solver did not converge"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("speed profiles (query EQ-QUERY-12): 0, used by 0 cases"), std::string::npos) << t.out;
 
   // A dry run against the built database: what a build would do, nothing written.
   const std::string before = read_text(db);

@@ -26,6 +26,9 @@
 //   query-interp-18 heading profiles (EQ-QUERY-11): data equal to a smooth factor times a line's stored
 //                   profile are exact between stored headings, in log and linear space; a cell with a
 //                   corner without a profile is interpolated as before, never half corrected
+//   query-interp-20 speed profiles (EQ-QUERY-12): data equal to a smooth factor times a line's stored speed
+//                   profile (a fold-like swing inside a 2 kt cell) are exact between stored speeds, alone and
+//                   with a heading profile; the error estimate along speed then vanishes
 //   query-interp-19 a node's mean tensions (EQ-QUERY-6): the monotone cubic is close to a smooth function where
 //                   the chord is not, never overshoots a steep rise or a local maximum, and is the chord with two
 #include <algorithm>
@@ -864,6 +867,87 @@ TEST_F(QueryTest, HeadingProfilesMakeDataProportionalToThemExactBetweenHeadings)
   EXPECT_LT(free_heading.values.interpolation_error_kips, 1e-9 * free_heading.values.dynamic_999_kips);
   const QueryResult plain_heading = plain_db.query(request(5.0, 20.0, 84.4, 1000.0, m));
   EXPECT_GT(plain_heading.values.interpolation_error_kips, 0.1 * plain_heading.values.dynamic_999_kips);
+}
+
+// query-interp-20
+// A speed profile with a swing inside the 5-7 kt cell (the encounter fold of
+// docs/audit.md): 9 points every 0.25 kt, the values as stored (binary16).
+std::vector<double> speed_profile_points() {
+  std::vector<double> sigma;
+  for (int j = 0; j < 9; ++j) sigma.push_back(10.0 - 8.0 * std::cos((5.0 + 0.25 * j - 6.1) * kPi / 0.6));
+  std::string packed;
+  EXPECT_TRUE(store::pack_float16(sigma, &packed));
+  return store::unpack_float16(packed, sigma.size(), "test");
+}
+double speed_profile_at(double v) {
+  static const std::vector<double> p = speed_profile_points();
+  const double x = (v - 5.0) / 0.25;
+  const int j = std::min(static_cast<int>(x), 7);
+  const double f = x - j;
+  return std::exp((1.0 - f) * std::log(p[j]) + f * std::log(p[j + 1]));
+}
+
+TEST_F(QueryTest, SpeedProfilesMakeDataProportionalToThemExactBetweenSpeeds) {
+  // EVIDENCE-OF: EQ-QUERY-12 (x / sigma interpolated across a speed cell; with EQ-QUERY-11 the two
+  // shifts add, exact for a product of a heading and a speed factor)
+  GridSpec g;
+  g.speeds_kt = {5.0, 7.0};
+  g.winds_kt = {20.0, 30.0};
+  g.headings_deg = {60.0, 75.0, 90.0, 105.0};
+  g.lengths_ft = {1000.0, 2000.0};
+  g.u_kips = [](double s, double w, double, double l, double m) {
+    return u_exponential(0.0, w, 0.0, l, m) * speed_profile_at(s);
+  };
+  g.beta_kips = [](double s, double w, double, double l, double m) {
+    return beta_exponential(0.0, w, 0.0, l, m) * speed_profile_at(s);
+  };
+  const std::string plain = write(grid_cases(g), "plain.towdb");
+  const std::string with = write(grid_cases(g), "speed.towdb");
+  write_speed_profiles(with, speed_profile_points(), 5.0, 0.25);
+  std::mt19937 rng(20);
+  Database db(with, TOWDB_QUERY_SPACE_LOG);
+  Database plain_db(plain, TOWDB_QUERY_SPACE_LOG);
+  double worst_plain = 0.0;
+  for (int i = 0; i < 200; ++i) {
+    const auto [s, w, h, l, m] = profile_cell_point(rng, g);
+    const QueryResult r = db.query(request(s, w, h, l, m));
+    EXPECT_REL_CLOSE(r.values.gumbel_u_kips, g.u_kips(s, w, h, l, m), kRoundOffRelTol) << s << " " << w << " " << h;
+    EXPECT_REL_CLOSE(1.0 / r.values.gumbel_alpha_per_kip, g.beta_kips(s, w, h, l, m), kRoundOffRelTol);
+    const QueryResult p = plain_db.query(request(s, w, h, l, m));
+    worst_plain = std::max(worst_plain, std::abs(p.values.gumbel_u_kips / g.u_kips(s, w, h, l, m) - 1.0));
+  }
+  EXPECT_GT(worst_plain, 0.3);  // without the profile the swing is lost between 5 and 7 kt
+  // EQ-QUERY-7 along speed: x / sigma does not change with speed, so the relative error estimate
+  // is that of the same data without the speed factor (what is left is the mean tension's).
+  GridSpec flat = g;
+  flat.u_kips = [](double, double w, double, double l, double m) { return u_exponential(0.0, w, 0.0, l, m); };
+  flat.beta_kips = [](double, double w, double, double l, double m) { return beta_exponential(0.0, w, 0.0, l, m); };
+  Database flat_db(write(grid_cases(flat), "flat.towdb"), TOWDB_QUERY_SPACE_LOG);
+  const double m = common_mean_range(g, 6.1, 20.0).first;
+  const QueryResult at_speed = db.query(request(6.1, 20.0, 60.0, 1000.0, m));
+  const QueryResult at_flat = flat_db.query(request(6.1, 20.0, 60.0, 1000.0, m));
+  EXPECT_REL_CLOSE(at_speed.values.interpolation_error_kips / at_speed.values.dynamic_999_kips,
+                   at_flat.values.interpolation_error_kips / at_flat.values.dynamic_999_kips, 1e-9);
+  const QueryResult plain_speed = plain_db.query(request(6.1, 20.0, 60.0, 1000.0, m));
+  EXPECT_GT(plain_speed.values.interpolation_error_kips, 0.1 * plain_speed.values.dynamic_999_kips);
+
+  // Both profiles: a heading factor times a speed factor, exact between headings and speeds.
+  GridSpec both = g;
+  both.u_kips = [](double s, double w, double h, double l, double m) {
+    return u_exponential(0.0, w, 0.0, l, m) * speed_profile_at(s) * profile_at(h);
+  };
+  both.beta_kips = [](double s, double w, double h, double l, double m) {
+    return beta_exponential(0.0, w, 0.0, l, m) * speed_profile_at(s) * profile_at(h);
+  };
+  const std::string both_path = write(grid_cases(both), "both.towdb");
+  write_speed_profiles(both_path, speed_profile_points(), 5.0, 0.25);
+  write_heading_profiles(both_path, profile_points());
+  Database both_db(both_path, TOWDB_QUERY_SPACE_LOG);
+  for (int i = 0; i < 100; ++i) {
+    const auto [s, w, h, l, m2] = profile_cell_point(rng, both);
+    const QueryResult r = both_db.query(request(s, w, h, l, m2));
+    EXPECT_REL_CLOSE(r.values.gumbel_u_kips, both.u_kips(s, w, h, l, m2), kRoundOffRelTol) << s << " " << h;
+  }
 }
 
 // query-interp-19

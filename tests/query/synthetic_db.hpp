@@ -10,6 +10,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -162,6 +163,39 @@ inline void write_heading_profiles(const std::filesystem::path& path, const std:
       insert.run();
       point.reset();
       point.bind(1, db.last_insert_rowid()).bind(2, s).bind(3, w).bind(4, l).bind(5, m).bind(6, skip);
+      point.run();
+    }
+  });
+}
+
+// Speed profiles (schema 11, query.h EQ-QUERY-12): one speed_profiles row per
+// line (wind, heading, length) holding `sigma_kips` (binary16) on the grid
+// first_kt, first_kt + step_kt, ..., and every case pointed at its line's.
+inline void write_speed_profiles(const std::filesystem::path& path, const std::vector<double>& sigma_kips,
+                                 double first_kt, double step_kt) {
+  auto db = store::Database::open(path, store::Database::Mode::kReadWrite);
+  std::string packed;
+  if (!store::pack_float16(sigma_kips, &packed)) throw std::runtime_error("speed profile does not fit binary16");
+  db.transaction([&] {
+    auto lines = db.prepare("SELECT DISTINCT wind_kt, heading_deg, length_ft FROM cases ORDER BY 1, 2, 3");
+    auto insert = db.prepare(
+        "INSERT INTO speed_profiles (profile_key, speed_first_kt, speed_step_kt, speeds, sigma_kips_f16) "
+        "VALUES (?, ?, ?, ?, ?)");
+    auto point = db.prepare(
+        "UPDATE cases SET speed_profile_id = ? WHERE wind_kt = ? AND heading_deg = ? AND length_ft = ?");
+    while (lines.step()) {
+      insert.reset();
+      insert.bind_blob(1, std::string(32, 'k'))
+          .bind(2, first_kt)
+          .bind(3, step_kt)
+          .bind(4, static_cast<std::int64_t>(sigma_kips.size()))
+          .bind_blob(5, packed);
+      insert.run();
+      point.reset();
+      point.bind(1, db.last_insert_rowid())
+          .bind(2, lines.column_double(0))
+          .bind(3, lines.column_double(1))
+          .bind(4, lines.column_double(2));
       point.run();
     }
   });

@@ -125,7 +125,8 @@ inline std::string dump_database(const std::filesystem::path& path, const std::s
   }
   std::string out;
   for (const char* table :
-       {"vessels", "towline_components", "towline_fits", "cases", "results", "case_days", "heading_profiles"}) {
+       {"vessels", "towline_components", "towline_fits", "cases", "results", "case_days", "heading_profiles",
+        "speed_profiles"}) {
     const std::string order = "1";
     const std::string sql = std::string("SELECT * FROM ") + table + " ORDER BY " + order;
     sqlite3_stmt* st = nullptr;
@@ -172,7 +173,7 @@ inline std::string dump_database(const std::filesystem::path& path, const std::s
 inline const std::set<std::string>& provenance_columns() {
   static const std::set<std::string> kColumns = {"cases.build_id", "cases.updated_utc", "results.runtime_s",
                                                  "vessels.file_path", "towline_components.file_path",
-                                                 "heading_profiles.build_id"};
+                                                 "heading_profiles.build_id", "speed_profiles.build_id"};
   return kColumns;
 }
 

@@ -166,6 +166,8 @@ void make_version_3(const std::filesystem::path& path) {
   ASSERT_EQ(sqlite3_open(path.c_str(), &raw), SQLITE_OK);
   const char* sql =
       "DROP TABLE case_days;"
+      "DROP TABLE speed_profiles;"  // migration 11 adds it again
+      "ALTER TABLE cases DROP COLUMN speed_profile_id;"
       "DROP TABLE heading_profiles;"  // migration 10 adds it again
       "ALTER TABLE cases DROP COLUMN profile_id;"
       "DROP TABLE coverage_notes;"  // migration 5 adds it again
@@ -327,6 +329,7 @@ TEST_F(StoreTest, MigrationNineStoresTheCaseKeysAsTheirThirtyTwoBytes) {
             " heading_deg, line_type, length_ft, mean_tension_lbf, days, seed) VALUES (1, '" + hex + "', '" + hex +
             "', '" + hex + "', 'A', 'B', 5, 'pierson-moskowitz', 0, 'fiber', 800, 1000, 2, 1), (2, 'k2', 'h2', NULL,"
             " 'A', 'B', 5, 'pierson-moskowitz', 30, 'fiber', 800, 1000, 2, 1)");
+    db.exec("DROP TABLE speed_profiles; ALTER TABLE cases DROP COLUMN speed_profile_id");  // migration 11 adds them
     db.exec("DROP TABLE heading_profiles; ALTER TABLE cases DROP COLUMN profile_id");  // migration 10 adds them
     db.exec("PRAGMA user_version = 8");
   }
@@ -344,6 +347,35 @@ TEST_F(StoreTest, MigrationNineStoresTheCaseKeysAsTheirThirtyTwoBytes) {
   ASSERT_TRUE(b.step());
   EXPECT_EQ(b.column_text(0), "k2");  // not a SHA-256: left as it was
   EXPECT_EQ(b.column_text(1), "null");
+}
+
+TEST_F(StoreTest, MigrationElevenAddsSpeedProfilesAndDropsTheConditionIndex) {
+  // EVIDENCE-OF: schema/011_speed_profiles.sql (the profile's CHECKs, the index it drops)
+  const auto path = dir_ / "v10.db";
+  {
+    Database db = Database::open(path, Database::Mode::kCreate);
+    db.exec("DROP TABLE speed_profiles; ALTER TABLE cases DROP COLUMN speed_profile_id");
+    db.exec("CREATE INDEX cases_by_condition ON cases (tug_name, tow_name, line_type, speed_kt, heading_deg)");
+    db.exec("PRAGMA user_version = 10");
+  }
+  Database db = Database::open(path, Database::Mode::kReadWrite);  // migrates
+  EXPECT_EQ(db.schema_version(), latest_schema_version());
+  Statement index = db.prepare("SELECT count(*) FROM sqlite_schema WHERE name = 'cases_by_condition'");
+  ASSERT_TRUE(index.step());
+  EXPECT_EQ(index.column_int(0), 0);
+  const std::string key(32, 'k');
+  auto insert = [&](double step_kt, std::int64_t speeds, const std::string& sigma) {
+    Statement st = db.prepare(
+        "INSERT INTO speed_profiles (profile_key, speed_first_kt, speed_step_kt, speeds, sigma_kips_f16) "
+        "VALUES (?, 5, ?, ?, ?)");
+    st.bind_blob(1, key).bind(2, step_kt).bind(3, speeds).bind_blob(4, sigma);
+    st.run();
+  };
+  insert(0.25, 2, std::string(4, '\0'));
+  EXPECT_THROW(insert(0.25, 2, std::string(8, '\0')), std::exception);  // 2 bytes a speed
+  EXPECT_THROW(insert(0.0, 2, std::string(4, '\0')), std::exception);   // step > 0
+  EXPECT_THROW(insert(0.25, 1, std::string(2, '\0')), std::exception);  // two speeds at least
+  db.exec("UPDATE cases SET speed_profile_id = NULL");  // the column exists
 }
 
 }  // namespace

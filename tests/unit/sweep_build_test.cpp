@@ -42,6 +42,12 @@
 //                  sea), the function's values in kips; 1 and 2 threads give the same rows; a second
 //                  build computes none; changed cases get new profiles and the old ones are
 //                  removed; a line whose profile fails keeps none and is named
+//   sweep-build-19 schema 11, speed profiles (speed_profiles.hpp EQ-SWEEP-9): the grid of a line
+//                  (0.25 kt from its lowest to its highest speed, stored speeds exact) and its mean
+//                  tensions (the stored ones at stored speeds, geometric in between, constant for a
+//                  given tension); one profile per line of two or more speeds, the function's values
+//                  as binary16 kips; 1 and 2 threads give the same rows; a second build computes
+//                  none; a stop in the stage resumes to the same rows; a failing line keeps none
 #include <sqlite3.h>
 #include <sys/file.h>
 #include <fcntl.h>
@@ -792,6 +798,146 @@ TEST(SweepBuild, StoresOneHeadingProfilePerLine) {  // sweep-build-18
   EXPECT_EQ(query_int(db, "SELECT count(*) FROM heading_profiles WHERE profile_id NOT IN (SELECT profile_id FROM "
                           "cases WHERE profile_id IS NOT NULL)"),
             0);
+}
+
+TEST(SweepBuild, SpeedProfileGridJoinsTheStoredTensionsGeometrically) {  // sweep-build-19
+  // Three stored speeds 2 kt apart: 17 points, the stored ones exact.
+  const auto p = sweep::speed_profile_points({5.0, 7.0, 9.0}, {100.0, 121.0, 144.0});
+  ASSERT_EQ(p.size(), 17u);
+  EXPECT_EQ(p[0].speed_kt, 5.0);
+  EXPECT_EQ(p[0].mean_tension_lbf, 100.0);
+  EXPECT_EQ(p[8].speed_kt, 7.0);
+  EXPECT_EQ(p[8].mean_tension_lbf, 121.0);
+  EXPECT_EQ(p[16].mean_tension_lbf, 144.0);
+  EXPECT_NEAR(p[4].speed_kt, 6.0, 1e-12);
+  EXPECT_NEAR(p[4].mean_tension_lbf, 110.0, 1e-9);   // sqrt(100 x 121)
+  EXPECT_NEAR(p[12].mean_tension_lbf, 132.0, 1e-9);  // sqrt(121 x 144)
+  // The AE 26's 5, 6.75 and 8.5 kt: 15 points, 6.75 kt among them; a given tension stays.
+  const auto q = sweep::speed_profile_points({5.0, 6.75, 8.5}, {60000.0, 60000.0, 60000.0});
+  ASSERT_EQ(q.size(), 15u);
+  EXPECT_EQ(q[7].speed_kt, 6.75);
+  for (const auto& pt : q) EXPECT_EQ(pt.mean_tension_lbf, 60000.0);
+  // A span that is not a multiple of the step: the points are closer than 0.25 kt.
+  const auto r = sweep::speed_profile_points({5.0, 5.6}, {1.0, 2.0});
+  ASSERT_EQ(r.size(), 4u);
+  EXPECT_NEAR(r[1].speed_kt, 5.2, 1e-12);
+  EXPECT_THROW(sweep::speed_profile_points({5.0, 5.0}, {1.0, 1.0}), InputError);
+  EXPECT_THROW(sweep::speed_profile_points({5.0}, {1.0}), InputError);
+  EXPECT_THROW(sweep::speed_profile_points({5.0, 6.0}, {1.0, -1.0}), InputError);
+}
+
+TEST(SweepBuild, StoresOneSpeedProfilePerLine) {  // sweep-build-19
+  Fixture f;
+  f.file = sweep::parse_sweep(R"(format = "towdb-sweep-1"
+description = "speed lines"
+[defaults]
+days = 20
+base_seed = 3
+[[grid]]
+label = "speeds"
+tugs = ["T-ATF 166"]
+tows = ["FFG 7", "YRBM"]
+speeds_kt = [5.0, 6.0, 7.5]
+winds_kt = [20.0]
+headings_deg = [0.0, 180.0]
+towlines = [ { line = "wire", length_ft = 1000.0 } ]
+mean_tensions = [
+  { label = "calculated", basis = "calculated", factor = 1.0 },
+  { label = "given-60k", basis = "given", value_lbf = 60000.0 },
+]
+)", "speeds.toml");
+  f.cases = sweep::expand_sweep(f.file, f.catalog).cases;
+  ASSERT_EQ(f.cases.size(), 24u);
+  std::mutex m;
+  std::map<std::string, std::vector<sweep::SpeedPoint>> asked;  // tow|heading|label -> the line's points
+  // sigma(V, m) = 1,000 N (1 + V / 10 kt) (1 + m / 1e6 lbf); YRBM at 0 deg fails.
+  auto closed_form = [&](const sweep::CaseSpec& spec, const io::ShipCatalog&,
+                         const std::vector<sweep::SpeedPoint>& points) {
+    if (spec.tow == "YRBM" && spec.heading_deg == 0.0) throw NumericalError("test: this line's linear model fails");
+    if (points.size() > 1) {
+      const std::lock_guard<std::mutex> lock(m);
+      asked[spec.tow + "|" + sweep::canonical_number(spec.heading_deg) + "|" + spec.mean_tension_label] = points;
+    }
+    std::vector<double> sigma;
+    for (const auto& p : points) sigma.push_back(1000.0 * (1.0 + p.speed_kt / 10.0) * (1.0 + p.mean_tension_lbf / 1e6));
+    return sigma;
+  };
+  sweep::BuildOptions o;
+  o.speed_profile = closed_form;
+  const fs::path db = f.dir / "speed.db";
+  const sweep::BuildSummary s = f.build(db, 2, make_test_runner(), o);
+  EXPECT_EQ(s.speed_profiles.lines, 8);  // 2 tows x 2 headings x 2 tensions
+  EXPECT_EQ(s.speed_profiles.failed, 2);
+  EXPECT_EQ(s.speed_profiles.computed, 6);
+  ASSERT_EQ(s.speed_profiles.failures.size(), 2u);
+  EXPECT_NE(s.speed_profiles.failures.front().find("this line's linear model fails"), std::string::npos);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM speed_profiles"), 6);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE speed_profile_id IS NOT NULL"), 18);
+  ASSERT_EQ(asked.size(), 6u);
+  // The calculated line's points: the stored cases' tensions at 5, 6 and 7.5 kt, geometric between.
+  {
+    auto d = store::Database::open(db, store::Database::Mode::kReadOnly);
+    auto st = d.prepare(
+        "SELECT speed_kt, mean_tension_lbf FROM cases WHERE tow_name = 'FFG 7' AND heading_deg = 180 AND "
+        "mean_tension_label = 'calculated' ORDER BY speed_kt");
+    std::vector<double> stored;
+    while (st.step()) stored.push_back(st.column_double(1));
+    ASSERT_EQ(stored.size(), 3u);
+    const auto& pts = asked.at("FFG 7|180|calculated");
+    ASSERT_EQ(pts.size(), 11u);  // 5 to 7.5 kt every 0.25 kt
+    EXPECT_EQ(pts[0].mean_tension_lbf, stored[0]);
+    EXPECT_EQ(pts[4].speed_kt, 6.0);
+    EXPECT_EQ(pts[4].mean_tension_lbf, stored[1]);
+    EXPECT_EQ(pts[10].mean_tension_lbf, stored[2]);
+    EXPECT_NEAR(pts[2].mean_tension_lbf, std::sqrt(stored[0] * stored[1]), 1e-9 * stored[1]);
+    EXPECT_NEAR(pts[7].mean_tension_lbf, std::sqrt(stored[1] * stored[2]), 1e-9 * stored[2]);
+    for (const auto& pt : asked.at("FFG 7|180|given-60k")) EXPECT_EQ(pt.mean_tension_lbf, 60000.0);
+    // Each stored row: the grid and the function's values in kips, binary16.
+    auto rows = d.prepare(
+        "SELECT p.speed_first_kt, p.speed_step_kt, p.speeds, p.sigma_kips_f16, c.tow_name, c.heading_deg, "
+        "c.mean_tension_label FROM speed_profiles p JOIN cases c ON c.speed_profile_id = p.speed_profile_id "
+        "WHERE c.speed_kt = 5");
+    int n = 0;
+    while (rows.step()) {
+      ++n;
+      EXPECT_EQ(rows.column_double(0), 5.0);
+      EXPECT_EQ(rows.column_double(1), 0.25);
+      ASSERT_EQ(rows.column_int(2), 11);
+      const auto& line = asked.at(rows.column_text(4) + "|" + sweep::canonical_number(rows.column_double(5)) + "|" +
+                                  rows.column_text(6));
+      std::vector<double> expected;
+      for (const auto& pt : line) {
+        expected.push_back(units::n_to_kips(1000.0 * (1.0 + pt.speed_kt / 10.0) * (1.0 + pt.mean_tension_lbf / 1e6)));
+      }
+      std::string packed;
+      ASSERT_TRUE(store::pack_float16(expected, &packed));
+      EXPECT_EQ(rows.column_blob(3), packed);
+    }
+    EXPECT_EQ(n, 6);
+  }
+  // One thread: the same rows; a second build: none computed (the failing lines tried again).
+  const fs::path one = f.dir / "one.db";
+  f.build(one, 1, make_test_runner(), o);
+  EXPECT_EQ(dump_database(one, provenance_columns()), dump_database(db, provenance_columns()));
+  const sweep::BuildSummary again = f.build(db, 2, make_test_runner(), o);
+  EXPECT_EQ(again.speed_profiles.up_to_date, 6);
+  EXPECT_EQ(again.speed_profiles.computed, 0);
+  // A stop request during the stage: interrupted, nothing written, resumed to the same rows.
+  const fs::path stopped = f.dir / "stopped.db";
+  std::atomic<bool> stop{false};
+  sweep::BuildOptions stopping = o;
+  stopping.stop = &stop;
+  stopping.speed_profile = [&](const sweep::CaseSpec& spec, const io::ShipCatalog& catalog,
+                               const std::vector<sweep::SpeedPoint>& points) {
+    stop = true;  // the warm-up's first call asks to stop
+    return closed_form(spec, catalog, points);
+  };
+  const sweep::BuildSummary cut = f.build(stopped, 2, make_test_runner(), stopping);
+  EXPECT_TRUE(cut.interrupted);
+  EXPECT_EQ(query_int(stopped, "SELECT count(*) FROM speed_profiles"), 0);
+  const sweep::BuildSummary resumed = f.build(stopped, 2, make_test_runner(), o);
+  EXPECT_EQ(resumed.speed_profiles.computed, 6);
+  EXPECT_EQ(dump_database(stopped, provenance_columns()), dump_database(db, provenance_columns()));
 }
 
 }  // namespace

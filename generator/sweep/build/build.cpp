@@ -412,6 +412,11 @@ BuildSummary run_build(const std::filesystem::path& db_path, const SweepFile& sw
                                                  summary.build_id, options.stop);
       summary.interrupted = summary.profiles.interrupted;
     }
+    if (!summary.interrupted && options.speed_profile) {
+      summary.speed_profiles = update_speed_profiles(*db, cases, keys, catalog, options.speed_profile,
+                                                     options.threads, summary.build_id, options.stop);
+      summary.interrupted = summary.speed_profiles.interrupted;
+    }
   } catch (...) {
     if (ranks > 1 && registered.empty()) stop_workers();
     try {

@@ -28,6 +28,7 @@
 #include "sweep/spec/keys.hpp"
 #include "sweep/spec/sweep_file.hpp"
 #include "sweep/build/profiles.hpp"
+#include "sweep/build/speed_profiles.hpp"
 #include "sweep/build/writer.hpp"
 
 namespace towdb::sweep {
@@ -61,6 +62,9 @@ struct BuildOptions {
   // The last stage: each line's linear heading profile (profiles.hpp,
   // EQ-SWEEP-8) after the cases (nullptr: no profiles are stored or updated).
   HeadingProfileFn heading_profile;
+  // Then each line's linear speed profile (speed_profiles.hpp, EQ-SWEEP-9;
+  // nullptr: none are stored or updated).
+  SpeedProfileFn speed_profile;
 
   // Throws InputError naming the field: threads in [1, 1024].
   void validate() const;
@@ -80,6 +84,7 @@ struct BuildSummary {
   int maxima_repacked = 0;       // cases whose daily maxima were repacked as binary16 (maxima_precision)
   int rekeyed = 0;  // stored cases moved to new keys: their files changed in comments or layout only (rekey.hpp)
   ProfileSummary profiles;  // the heading-profile stage (lines 0 when it did not run)
+  ProfileSummary speed_profiles;  // the speed-profile stage (lines 0 when it did not run)
   int slack_snatch_dropped = 0;  // cases whose per-day slack and snatch were dropped (day_records = "maxima")
   std::vector<std::string> failures;  // "case_id N (label): reason", this run
 };

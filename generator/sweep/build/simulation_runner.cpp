@@ -72,6 +72,21 @@ HeadingProfileFn linear_heading_profile(simulation::CaseOptions options) {
   };
 }
 
+SpeedProfileFn linear_speed_profile(simulation::CaseOptions options) {
+  options.validate();
+  return [options](const CaseSpec& spec, const io::ShipCatalog& catalog, const std::vector<SpeedPoint>& points) {
+    std::vector<double> sigma;
+    sigma.reserve(points.size());
+    CaseSpec at = spec;
+    for (const SpeedPoint& p : points) {
+      at.speed_kt = p.speed_kt;
+      at.mean_tension_lbf = p.mean_tension_lbf;
+      sigma.push_back(std::sqrt(simulation::linear_tension_variance_n2(case_inputs(at, catalog), options)));
+    }
+    return sigma;
+  };
+}
+
 CaseRunner simulation_case_runner(simulation::CaseOptions options) {
   options.validate();
   return [options](const CaseSpec& spec, const io::ShipCatalog& catalog) {

@@ -35,6 +35,11 @@ LowestPointFn static_lowest_elevation(simulation::CaseOptions options);
 // `options` (responses shared with the cases through the response cache).
 HeadingProfileFn linear_heading_profile(simulation::CaseOptions options);
 
+// The linear speed profile of a case's line (simulation EQ-CASE-3 at each
+// point's speed and mean tension; responses shared through the response
+// cache, towline fits through the fit cache).
+SpeedProfileFn linear_speed_profile(simulation::CaseOptions options);
+
 // R_S = 2 int R_aw/zeta^2 S dw of the tow (seakeeping EQ-AR-2), summed over
 // the wave systems, on the case grid of `options` (responses shared with the
 // cases through simulation::cached_responses).

@@ -19,6 +19,8 @@ StatusReport read_status(const std::filesystem::path& db_path, int max_builds, i
   r.towline_fits = count("SELECT count(*) FROM towline_fits");
   r.heading_profiles = count("SELECT count(*) FROM heading_profiles");
   r.cases_with_profile = count("SELECT count(*) FROM cases WHERE profile_id IS NOT NULL");
+  r.speed_profiles = count("SELECT count(*) FROM speed_profiles");
+  r.cases_with_speed_profile = count("SELECT count(*) FROM cases WHERE speed_profile_id IS NOT NULL");
   r.vessels = count("SELECT count(*) FROM vessels");
   for (const char* s : {"pending", "running", "done", "failed"}) r.cases_by_status[s] = 0;
   {

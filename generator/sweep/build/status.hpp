@@ -43,6 +43,8 @@ struct StatusReport {
   std::int64_t towline_fits = 0;
   std::int64_t heading_profiles = 0;   // heading_profiles rows (EQ-SWEEP-8)
   std::int64_t cases_with_profile = 0;  // cases whose profile_id is set
+  std::int64_t speed_profiles = 0;      // speed_profiles rows (EQ-SWEEP-9)
+  std::int64_t cases_with_speed_profile = 0;  // cases whose speed_profile_id is set
   std::int64_t vessels = 0;
   std::optional<double> total_runtime_s;  // sum of results.runtime_s
   std::vector<BuildRecord> builds;        // newest first, at most `max_builds`

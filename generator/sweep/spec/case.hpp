@@ -167,6 +167,19 @@ using LowestPointFn = std::function<double(const CaseSpec&, const io::ShipCatalo
 using HeadingProfileFn =
     std::function<std::vector<double>(const CaseSpec&, const io::ShipCatalog&, const std::vector<double>& headings_deg)>;
 
+// One point of a speed profile (EQ-SWEEP-9): a speed and the mean tension
+// that goes with it there.
+struct SpeedPoint {
+  double speed_kt = 0.0;          // > 0
+  double mean_tension_lbf = 0.0;  // > 0
+};
+// The linear dynamic-tension standard deviation [N] of a case's line at each
+// of `points` (the spec's speed and mean tension replaced, every other input
+// as in the spec; simulation EQ-CASE-3): the speed profiles a build stores
+// for the query (sweep/build/speed_profiles.hpp).
+using SpeedProfileFn =
+    std::function<std::vector<double>(const CaseSpec&, const io::ShipCatalog&, const std::vector<SpeedPoint>& points)>;
+
 // The production runner is registered once by the CLI (the simulation chain);
 // `towdb build` refuses to run while none is registered.
 void set_default_case_runner(CaseRunner runner);

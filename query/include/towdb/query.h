@@ -138,6 +138,25 @@
  *             of x / sigma: where the profile explains the tension's change
  *             the estimate is small, where the ratio changes (slack, the
  *             slowly varying forces) it is not.
+ * EQ-QUERY-12 Speed profiles. The same along speed: where the database
+ *             stores a linear speed profile sigma_l(V) for the line l of a
+ *             stored case (the cases that differ only in speed and the mean
+ *             tension that goes with it; speed_profiles, the generator's
+ *             EQ-SWEEP-9: every 0.25 kt at most, the mean tension of the
+ *             line's stored cases joined geometrically in speed, which is
+ *             f T_calc(q) of EQ-QUERY-9 on a relative axis), a cell whose
+ *             speed is not pinned moves each corner from V_c to V_q:
+ *               g_c <- g_c + ln sigma_l(V_q) - ln sigma_l(V_c)   (log space),
+ *             (a factor in linear space), after the heading move of
+ *             EQ-QUERY-11 (the two shifts add: a corner goes from (V_c, h_c)
+ *             to (V_q, h_q) along its heading profile at V_c, then its speed
+ *             profile at h_c). In following and quartering seas the encounter
+ *             frequency folds (w_e = g / 4V) through the coupled surge
+ *             response within a fraction of a knot and the tension swings
+ *             by a factor of 7 between speeds 1.75 kt apart; the linear
+ *             model swings with it (docs/audit.md). Never half corrected;
+ *             the error estimate along speed differences x / sigma, as along
+ *             heading.
  *
  * CONVENTIONS AND UNITS
  *   Units are those of the database, in every name: kt, ft, lbf, kips
