@@ -940,5 +940,44 @@ mean_tensions = [
   EXPECT_EQ(dump_database(stopped, provenance_columns()), dump_database(db, provenance_columns()));
 }
 
+TEST(SweepBuild, SpeedProfileLineFoldsHeadingsAndSkipsTwoTensionsAtOneSpeed) {  // sweep-build-19
+  Fixture f;
+  f.file = sweep::parse_sweep(R"(format = "towdb-sweep-1"
+description = "folded headings"
+[defaults]
+days = 20
+base_seed = 3
+[[grid]]
+label = "folded"
+tugs = ["T-ATF 166"]
+tows = ["FFG 7"]
+speeds_kt = [5.0, 6.0]
+winds_kt = [20.0]
+headings_deg = [30.0, 330.0]
+towlines = [ { line = "wire", length_ft = 1000.0 } ]
+mean_tensions = [ { label = "given-60k", basis = "given", value_lbf = 60000.0 } ]
+)", "folded.toml");
+  f.cases = sweep::expand_sweep(f.file, f.catalog).cases;
+  ASSERT_EQ(f.cases.size(), 4u);
+  sweep::BuildOptions o;
+  o.speed_profile = [](const sweep::CaseSpec&, const io::ShipCatalog&, const std::vector<sweep::SpeedPoint>& points) {
+    return std::vector<double>(points.size(), 1000.0);
+  };
+  const fs::path db = f.dir / "folded.db";
+  const sweep::BuildSummary s = f.build(db, 2, make_test_runner(), o);
+  // 30 and 330 deg are one line: one profile of 5 speeds, all four cases pointed at it.
+  EXPECT_EQ(s.speed_profiles.lines, 1);
+  EXPECT_EQ(s.speed_profiles.computed, 1);
+  EXPECT_EQ(query_int(db, "SELECT speeds FROM speed_profiles"), 5);
+  EXPECT_EQ(query_int(db, "SELECT count(*) FROM cases WHERE speed_profile_id IS NOT NULL"), 4);
+
+  // Two mean tensions at one speed under one label (a given tension edited at one speed): no line.
+  f.cases[1].mean_tension_lbf = 61000.0;
+  const fs::path two = f.dir / "two.db";
+  const sweep::BuildSummary t = f.build(two, 2, make_test_runner(), o);
+  EXPECT_EQ(t.speed_profiles.lines, 0);
+  EXPECT_EQ(query_int(two, "SELECT count(*) FROM speed_profiles"), 0);
+}
+
 }  // namespace
 }  // namespace towdb::test

@@ -39,7 +39,9 @@ std::string speed_line_identity(const CaseSpec& s) {
 }
 
 // The finished cases of the sweep grouped into lines of two or more distinct
-// speeds (a line with two cases at one speed is left out).
+// speeds. Cases at one speed with the same mean tension (headings h and
+// 360 - h, folded into one line) share a point; a line with two mean tensions
+// at one speed is left out.
 std::vector<SpeedLine> finished_speed_lines(store::Database& db, const std::vector<CaseSpec>& cases,
                                             const std::vector<CaseKeys>& keys) {
   store::Statement by_key = db.prepare("SELECT case_id, status FROM cases WHERE case_key = ?");
@@ -60,14 +62,19 @@ std::vector<SpeedLine> finished_speed_lines(store::Database& db, const std::vect
     line.name = id;
     std::vector<double> speeds, means;
     std::vector<std::string> member_keys;
+    bool ambiguous = false;
     for (const auto& [i, case_id] : members) {
       line.members.push_back(i);
       line.case_ids.push_back(case_id);
+      member_keys.push_back(keys[i].case_key);
+      if (!speeds.empty() && speeds.back() == cases[i].speed_kt) {
+        ambiguous = ambiguous || means.back() != cases[i].mean_tension_lbf;
+        continue;
+      }
       speeds.push_back(cases[i].speed_kt);
       means.push_back(cases[i].mean_tension_lbf);
-      member_keys.push_back(keys[i].case_key);
     }
-    if (speeds.size() < 2 || std::adjacent_find(speeds.begin(), speeds.end()) != speeds.end()) continue;
+    if (speeds.size() < 2 || ambiguous) continue;
     line.points = speed_profile_points(speeds, means);
     std::sort(member_keys.begin(), member_keys.end());
     std::string text = "speed-profile/1|" + canonical_number(kSpeedProfileStepKt);

@@ -31,7 +31,8 @@
 //   - a profile depends only on its line's stored cases: the same bits for any
 //     thread or rank count;
 //   - a line whose profile fails keeps none and is counted; a line with two
-//     cases at one speed (a reduced speed meeting a nominal one) gets none.
+//     mean tensions at one speed (a reduced speed meeting a nominal one) gets
+//     none, while headings h and 360 - h (one line) share their points.
 // Units: kt and lbf as the cases columns, sigma in kips stored as binary16
 // (0.05 % rounding at most; the query takes differences of ln sigma).
 #ifndef TOWDB_SWEEP_SPEED_PROFILES_HPP
