@@ -3,9 +3,43 @@
 #include <algorithm>
 #include <exception>
 
+#include <cmath>
+
+#include "common/error.hpp"
 #include "common/parallel_for.hpp"
+#include "common/units.hpp"
+#include "io/ship_file.hpp"
+#include "store/key_bytes.hpp"
 
 namespace towdb::sweep {
+
+FinishedCases::FinishedCases(store::Database& db)
+    : by_key_(db.prepare("SELECT case_id, status FROM cases WHERE case_key = ?")) {}
+
+std::int64_t FinishedCases::case_id(const CaseKeys& keys) {
+  by_key_.reset();
+  by_key_.bind_blob(1, store::key_bytes(keys.case_key, "case_key"));
+  return by_key_.step() && by_key_.column_text(1) == "done" ? by_key_.column_int(0) : 0;
+}
+
+std::string line_profile_key(std::string head, std::vector<std::string> case_keys) {
+  std::sort(case_keys.begin(), case_keys.end());
+  for (const auto& k : case_keys) head += "|" + k;
+  return store::key_bytes(io::sha256_hex(head), "profile_key");
+}
+
+std::vector<double> checked_sigma_kips(const std::vector<double>& sigma_n) {
+  std::vector<double> kips;
+  kips.reserve(sigma_n.size());
+  for (double n : sigma_n) {
+    const double s = units::n_to_kips(n);
+    if (!(s > 0.0 && std::isfinite(s))) {
+      throw NumericalError("linear dynamic-tension sigma " + format_value(s) + " kips; allowed: finite, > 0");
+    }
+    kips.push_back(s);
+  }
+  return kips;
+}
 
 void point_cases_at(store::Database& db, const char* column, const std::vector<std::int64_t>& case_ids,
                     std::int64_t profile_id) {

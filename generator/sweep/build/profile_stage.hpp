@@ -14,8 +14,28 @@
 
 #include "store/database.hpp"
 #include "sweep/build/profiles.hpp"
+#include "sweep/spec/keys.hpp"
 
 namespace towdb::sweep {
+
+// The case_id of each finished ("done") case of the sweep, by its keys; 0 for
+// a case not stored or not finished.
+class FinishedCases {
+ public:
+  explicit FinishedCases(store::Database& db);
+  std::int64_t case_id(const CaseKeys& keys);
+
+ private:
+  store::Statement by_key_;
+};
+
+// profile_key of a line: SHA-256 of `head` followed by "|" and each of the
+// line's case keys in sorted order (32 bytes).
+std::string line_profile_key(std::string head, std::vector<std::string> case_keys);
+
+// A profile function's values [N] as kips, each checked finite and > 0
+// (NumericalError naming the value otherwise).
+std::vector<double> checked_sigma_kips(const std::vector<double>& sigma_n);
 
 // Sets `column` (profile_id or speed_profile_id) of the cases to
 // `profile_id` (NULL for 0), touching only rows that change.

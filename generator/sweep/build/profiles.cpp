@@ -6,8 +6,6 @@
 
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
-#include "common/units.hpp"
-#include "store/key_bytes.hpp"
 #include "store/packed_days.hpp"
 #include "sweep/build/profile_stage.hpp"
 
@@ -38,18 +36,17 @@ double folded(double heading_deg) { return heading_deg > 180.0 ? 360.0 - heading
 // The finished cases of the sweep grouped into lines of two or more headings.
 std::vector<Line> finished_lines(store::Database& db, const std::vector<CaseSpec>& cases,
                                  const std::vector<CaseKeys>& keys) {
-  store::Statement by_key = db.prepare("SELECT case_id, status FROM cases WHERE case_key = ?");
+  FinishedCases finished(db);
   std::map<std::string, Line> lines;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const std::string id = line_identity(cases[i]);
     if (id.empty()) continue;
-    by_key.reset();
-    by_key.bind_blob(1, store::key_bytes(keys[i].case_key, "case_key"));
-    if (!by_key.step() || by_key.column_text(1) != "done") continue;
+    const std::int64_t case_id = finished.case_id(keys[i]);
+    if (case_id == 0) continue;
     Line& line = lines[id];
     line.name = id;
     line.members.push_back(i);
-    line.case_ids.push_back(by_key.column_int(0));
+    line.case_ids.push_back(case_id);
   }
   std::vector<Line> out;
   for (auto& [id, line] : lines) {
@@ -59,11 +56,9 @@ std::vector<Line> finished_lines(store::Database& db, const std::vector<CaseSpec
     if (std::unique(headings.begin(), headings.end()) - headings.begin() < 2) continue;
     std::vector<std::string> member_keys;
     for (std::size_t i : line.members) member_keys.push_back(keys[i].case_key);
-    std::sort(member_keys.begin(), member_keys.end());
-    std::string text = "heading-profile/1|" + canonical_number(kProfileStepDeg) + "|" +
-                       std::to_string(kProfileHeadings);
-    for (const auto& k : member_keys) text += "|" + k;
-    line.profile_key = store::key_bytes(io::sha256_hex(text), "profile_key");
+    line.profile_key = line_profile_key(
+        "heading-profile/1|" + canonical_number(kProfileStepDeg) + "|" + std::to_string(kProfileHeadings),
+        std::move(member_keys));
     out.push_back(std::move(line));
   }
   return out;
@@ -106,15 +101,7 @@ void warm_responses(const std::vector<Line>& lines, const std::vector<std::size_
 // The line's profile [kips], checked finite and > 0, packed as binary32.
 std::string compute_profile(const Line& line, const std::vector<CaseSpec>& cases, const io::ShipCatalog& catalog,
                             const HeadingProfileFn& profile, const std::vector<double>& headings) {
-  std::vector<double> sigma_kips;
-  for (double n : profile(cases[line.members.front()], catalog, headings)) {
-    const double s = units::n_to_kips(n);
-    if (!(s > 0.0 && std::isfinite(s))) {
-      throw NumericalError("linear dynamic-tension sigma " + format_value(s) + " kips; allowed: finite, > 0");
-    }
-    sigma_kips.push_back(s);
-  }
-  return store::pack_float32(sigma_kips);
+  return store::pack_float32(checked_sigma_kips(profile(cases[line.members.front()], catalog, headings)));
 }
 
 // Stores one line's profile and points its cases at it.

@@ -8,8 +8,6 @@
 
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
-#include "common/units.hpp"
-#include "store/key_bytes.hpp"
 #include "store/packed_days.hpp"
 #include "sweep/build/profile_stage.hpp"
 
@@ -44,15 +42,13 @@ std::string speed_line_identity(const CaseSpec& s) {
 // at one speed is left out.
 std::vector<SpeedLine> finished_speed_lines(store::Database& db, const std::vector<CaseSpec>& cases,
                                             const std::vector<CaseKeys>& keys) {
-  store::Statement by_key = db.prepare("SELECT case_id, status FROM cases WHERE case_key = ?");
+  FinishedCases finished(db);
   std::map<std::string, std::vector<std::pair<std::size_t, std::int64_t>>> groups;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     std::string id = speed_line_identity(cases[i]);
     if (id.empty()) continue;
-    by_key.reset();
-    by_key.bind_blob(1, store::key_bytes(keys[i].case_key, "case_key"));
-    if (!by_key.step() || by_key.column_text(1) != "done") continue;
-    groups[std::move(id)].emplace_back(i, by_key.column_int(0));
+    const std::int64_t case_id = finished.case_id(keys[i]);
+    if (case_id != 0) groups[std::move(id)].emplace_back(i, case_id);
   }
   std::vector<SpeedLine> out;
   for (auto& [id, members] : groups) {
@@ -76,10 +72,8 @@ std::vector<SpeedLine> finished_speed_lines(store::Database& db, const std::vect
     }
     if (speeds.size() < 2 || ambiguous) continue;
     line.points = speed_profile_points(speeds, means);
-    std::sort(member_keys.begin(), member_keys.end());
-    std::string text = "speed-profile/1|" + canonical_number(kSpeedProfileStepKt);
-    for (const auto& k : member_keys) text += "|" + k;
-    line.profile_key = store::key_bytes(io::sha256_hex(text), "profile_key");
+    line.profile_key =
+        line_profile_key("speed-profile/1|" + canonical_number(kSpeedProfileStepKt), std::move(member_keys));
     out.push_back(std::move(line));
   }
   return out;
@@ -121,14 +115,7 @@ void warm_responses(const std::vector<SpeedLine>& lines, const std::vector<std::
 // The line's profile [kips], checked finite and > 0, packed as binary16.
 std::string compute_profile(const SpeedLine& line, const std::vector<CaseSpec>& cases, const io::ShipCatalog& catalog,
                             const SpeedProfileFn& profile) {
-  std::vector<double> sigma_kips;
-  for (double n : profile(cases[line.members.front()], catalog, line.points)) {
-    const double s = units::n_to_kips(n);
-    if (!(s > 0.0 && std::isfinite(s))) {
-      throw NumericalError("linear dynamic-tension sigma " + format_value(s) + " kips; allowed: finite, > 0");
-    }
-    sigma_kips.push_back(s);
-  }
+  const std::vector<double> sigma_kips = checked_sigma_kips(profile(cases[line.members.front()], catalog, line.points));
   if (sigma_kips.size() != line.points.size()) {
     throw NumericalError("speed profile of " + std::to_string(sigma_kips.size()) + " values for " +
                          std::to_string(line.points.size()) + " speeds");
