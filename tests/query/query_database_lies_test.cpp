@@ -7,7 +7,8 @@
 //   query-lies-1  bad stored values: alpha <= 0 (negative Gumbel scale) or subnormal (infinite scale), NULL (NaN),
 //                 inf, text, out-of-range
 //                 level, fraction, heading, speed, days, calculated mean tension, sag, a heading profile's
-//                 sigma (0, NaN), step or length (EQ-QUERY-11) -> refused, named
+//                 sigma (0, NaN), step or length (EQ-QUERY-11), a speed profile's sigma, first speed or length
+//                 (EQ-QUERY-12) -> refused, named
 //   query-lies-2  contradictions between columns: dynamic_999 != u + beta y_999 (EQ-QUERY-3), ci_low > ci_high,
 //                 a sea with neither wind nor Hs, an Hs without Tp -> refused, named
 //   query-lies-3  a schema version from the future -> refused naming both versions
@@ -143,6 +144,12 @@ TEST_F(DatabaseLies, BadStoredValuesAreRefusedAndNamed) {  // query-lies-1
        {"heading_profiles row 7 has first heading 0 deg, step 0 deg", "allowed: first in [0, 180], a finite step > 0"}},
       {"INSERT INTO heading_profiles VALUES (7, X'01', 60000, 0, 2.5, 3, X'0000803F0000803F', NULL)",
        {"heading_profiles row 7: sigma_kips_f32 holds 8 bytes; expected 4 x 3 headings"}},
+      {"INSERT INTO speed_profiles VALUES (1, X'01', 5, 0.25, 2, X'003C0000', NULL)",
+       {"speed_profiles.sigma_kips_f16 of speed_profile_id 1 holds 0 kips", "finite and > 0"}},
+      {"INSERT INTO speed_profiles VALUES (7, X'01', 0, 0.25, 2, X'003C003C', NULL)",
+       {"speed_profiles row 7 has first speed 0 kt, step 0.25 kt", "allowed: first in (0, 100], a finite step > 0"}},
+      {"INSERT INTO speed_profiles VALUES (7, X'01', 5, 0.25, 3, X'003C003C', NULL)",
+       {"speed_profiles row 7: sigma_kips_f16 holds 4 bytes; expected 2 x 3 speeds"}},
   };
   for (const Lie& l : lies) {
     SCOPED_TRACE(l.sql);
