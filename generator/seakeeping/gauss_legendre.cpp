@@ -1,7 +1,11 @@
 #include "seakeeping/gauss_legendre.hpp"
 
 #include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <string>
+#include <tuple>
 
 #include "common/constants.hpp"
 #include "common/error.hpp"
@@ -54,6 +58,15 @@ QuadratureRule gauss_legendre(int n, double lo, double hi) {
     rule.weights[b] = half * w;
   }
   return rule;
+}
+
+const QuadratureRule& cached_gauss_legendre(int n, double lo, double hi) {
+  static std::mutex mutex;
+  static std::map<std::tuple<int, double, double>, std::unique_ptr<const QuadratureRule>> rules;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = rules[std::make_tuple(n, lo, hi)];
+  if (!slot) slot = std::make_unique<const QuadratureRule>(gauss_legendre(n, lo, hi));
+  return *slot;
 }
 
 }  // namespace towdb::seakeeping

@@ -16,6 +16,11 @@ struct QuadratureRule {
 // 2n - 1 (Abramowitz & Stegun 25.4.29). Throws InputError for n < 1.
 QuadratureRule gauss_legendre(int n, double lo, double hi);
 
+// The same rule, computed once per (n, lo, hi) for the whole process and kept:
+// the section solver asks for the same few rules at every section and
+// frequency. Thread-safe; the reference stays valid until exit.
+const QuadratureRule& cached_gauss_legendre(int n, double lo, double hi);
+
 }  // namespace towdb::seakeeping
 
 #endif  // TOWDB_SEAKEEPING_GAUSS_LEGENDRE_HPP

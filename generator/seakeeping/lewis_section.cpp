@@ -159,7 +159,7 @@ SectionArea lewis_section_area(const LewisForm& form, int quadrature_points) {
   require_input(quadrature_points >= 4, "lewis_section_area quadrature_points", quadrature_points,
                 "at least 4");
   const Map map{form.scale_m, form.a1, form.a3};
-  const QuadratureRule rule = gauss_legendre(quadrature_points, 0.0, kPi);
+  const QuadratureRule& rule = cached_gauss_legendre(quadrature_points, 0.0, kPi);
   // int int f dA = -int_0^pi F(y(theta)) dX/dtheta dtheta with F = int_{z_b}^0 f dz:
   // f = 1 gives F = -z, f = z gives F = -z^2/2 (z = -Y on the contour).
   double area = 0.0;
@@ -231,13 +231,16 @@ void evaluate_basis(const Map& map, double wavenumber, Symmetry symmetry, double
   const double km = wavenumber * map.m;
   // zeta^-n on the unit circle, n = 0 .. 2 terms + 4, by recurrence.
   const int max_power = 2 * terms + 5;
-  std::vector<Complex> powers(static_cast<std::size_t>(max_power + 1));
+  // Scratch kept per thread: this runs at every collocation point of every
+  // section, frequency and trial, where an allocation a call showed in profiles.
+  thread_local std::vector<Complex> powers;
+  powers.resize(static_cast<std::size_t>(max_power + 1));
   powers[0] = Complex(1.0, 0.0);
   const Complex inv_zeta = std::conj(zeta);
   for (int p = 1; p <= max_power; ++p) {
     powers[static_cast<std::size_t>(p)] = powers[static_cast<std::size_t>(p - 1)] * inv_zeta;
   }
-  auto inv_pow = [&powers](int n) { return powers[static_cast<std::size_t>(n)]; };
+  auto inv_pow = [](int n) { return powers[static_cast<std::size_t>(n)]; };
   for (int m = 1; m <= terms; ++m) {
     const int n = symmetry == Symmetry::kSymmetric ? 2 * m : 2 * m + 1;
     const double dn = static_cast<double>(n);
@@ -277,7 +280,7 @@ struct HalfContour {
 };
 
 HalfContour make_quadrature(const Map& map, int points) {
-  const QuadratureRule rule = gauss_legendre(points, 0.0, 0.5 * kPi);
+  const QuadratureRule& rule = cached_gauss_legendre(points, 0.0, 0.5 * kPi);
   HalfContour h;
   h.theta = rule.nodes;
   h.weight = rule.weights;
