@@ -7,6 +7,7 @@
 
 #include "common/constants.hpp"
 #include "seakeeping/exponential_integral.hpp"
+#include "seakeeping/gauss_legendre.hpp"
 #include "seakeeping/lewis_section.hpp"
 #include "test_support.hpp"
 
@@ -58,6 +59,28 @@ TEST(SeakeepingExponentialIntegral, MatchesTabulatedValuesOnBothMethods) {
 
 // EVIDENCE-OF: EQ-LEWIS-1
 // EVIDENCE-OF: EQ-LEWIS-2
+// Gauss-Legendre with n nodes is exact for polynomials of degree 2n - 1
+// (Abramowitz & Stegun 25.4.29): int_0^{pi/2} x^k dx = (pi/2)^{k+1} / (k+1).
+// The per-process memo must hand back the very rule the function computes.
+TEST(SeakeepingQuadrature, GaussLegendreIsExactToDegreeTwoNMinusOneAndTheMemoIsThatRule) {
+  constexpr double kRoundoffRelTol = 1e-13;  // sums of O(n) terms of size ~1
+  const double hi = 0.5 * kPi;
+  for (int n : {1, 2, 5, 16, 48}) {
+    const QuadratureRule rule = gauss_legendre(n, 0.0, hi);
+    for (int k = 0; k <= 2 * n - 1; ++k) {
+      double sum = 0.0;
+      for (std::size_t i = 0; i < rule.nodes.size(); ++i) sum += rule.weights[i] * std::pow(rule.nodes[i], k);
+      const double exact = std::pow(hi, k + 1) / (k + 1);
+      EXPECT_NEAR(sum, exact, kRoundoffRelTol * exact) << "n = " << n << ", degree " << k;
+    }
+    const QuadratureRule& cached = cached_gauss_legendre(n, 0.0, hi);
+    EXPECT_EQ(cached.nodes, rule.nodes) << "n = " << n;      // bit for bit
+    EXPECT_EQ(cached.weights, rule.weights) << "n = " << n;
+    EXPECT_EQ(&cached, &cached_gauss_legendre(n, 0.0, hi)) << "computed once";
+    EXPECT_NE(&cached, &cached_gauss_legendre(n, 0.0, kPi)) << "another interval is another rule";
+  }
+}
+
 TEST(SeakeepingLewis, MapReproducesBeamDraftAndArea) {
   struct Case {
     double beam, draft, sigma;
