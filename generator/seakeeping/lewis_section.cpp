@@ -232,7 +232,8 @@ void evaluate_basis(const Map& map, double wavenumber, Symmetry symmetry, double
   // zeta^-n on the unit circle, n = 0 .. 2 terms + 4, by recurrence.
   const int max_power = 2 * terms + 5;
   // Scratch kept per thread: this runs at every collocation point of every
-  // section, frequency and trial, where an allocation a call showed in profiles.
+  // section, frequency and trial, and a fresh allocation each call showed in
+  // profiles.
   thread_local std::vector<Complex> powers;
   powers.resize(static_cast<std::size_t>(max_power + 1));
   powers[0] = Complex(1.0, 0.0);
