@@ -1,9 +1,8 @@
 #include "sweep/build/profile_stage.hpp"
 
 #include <algorithm>
-#include <exception>
-
 #include <cmath>
+#include <exception>
 
 #include "common/error.hpp"
 #include "common/parallel_for.hpp"
