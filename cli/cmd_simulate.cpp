@@ -191,6 +191,15 @@ int run_simulate(const Context& ctx, const SimulateArgs& a) {
                     {"a10_lbf_per_ft", units::n_per_m_to_lbf_per_ft(r.towline.coefficients.a10())},
                     {"a01_lbf_s_per_ft", units::n_s_per_m_to_lbf_s_per_ft(r.towline.coefficients.a01())},
                     {"fit_rms_lbf", units::n_to_lbf(r.towline.fit_rms_error_n)}};
+    // Where the days took the line, against the polynomial's fitted range
+    // (outside it the tension is a linear continuation: case_runner.hpp).
+    j["extension_ft"] = {{"mean", units::m_to_ft(r.extension.mean_m)},
+                         {"sd", units::m_to_ft(r.extension.sd_m)},
+                         {"min", units::m_to_ft(r.extension.min_m)},
+                         {"max", units::m_to_ft(r.extension.max_m)},
+                         {"fit_min", units::m_to_ft(r.towline.fit_xi_min_m)},
+                         {"fit_max", units::m_to_ft(r.towline.fit_xi_max_m)},
+                         {"days_outside_fit", r.extension.days_outside_fit}};
     j["surge_damping_lbf_s_per_ft"] = {
         {"tug_hull", units::n_s_per_m_to_lbf_s_per_ft(r.tug_hull_damping_n_s_m)},
         {"tug_propeller", units::n_s_per_m_to_lbf_s_per_ft(r.tug_propeller_damping_n_s_m)},
@@ -233,12 +242,22 @@ int run_simulate(const Context& ctx, const SimulateArgs& a) {
   t.add_row({"fit: Anderson-Darling A^2, PPCC", fmt(st.anderson_darling, 3) + ", " + fmt(st.ppcc, 4)});
   t.add_row({"slack time, snatch events per day",
              fmt(100 * r.slack_fraction, 3) + " %, " + fmt(r.snatch_events_per_day, 2)});
+  t.add_row({"line extension: sd, range",
+             fmt(units::m_to_ft(r.extension.sd_m), 2) + " ft, " + fmt(units::m_to_ft(r.extension.min_m), 1) + " to " +
+                 fmt(units::m_to_ft(r.extension.max_m), 1) + " ft (fitted " +
+                 fmt(units::m_to_ft(r.towline.fit_xi_min_m), 1) + " to " +
+                 fmt(units::m_to_ft(r.towline.fit_xi_max_m), 1) + " ft)"});
   t.add_row({"days, seed", std::to_string(a.days) + ", " + std::to_string(a.seed)});
   t.add_row({"run time", fmt(r.timings.total_s, 2) + " s"});
   t.print(std::cout);
   if (r.above_breaking_strength) {
     std::cout << "\nwarning: mean + dynamic tension exceeds the towline's breaking strength; the towline model is "
                  "not valid there (thesis 6.1)\n";
+  }
+  if (r.extension.days_outside_fit > 0) {
+    std::cout << "\nnote: on " << r.extension.days_outside_fit << " of " << a.days
+              << " days the line's extension left the range the towline polynomial was fitted over; the tension "
+                 "there is a linear continuation of the fit, not cable dynamics\n";
   }
   return 0;
 }

@@ -468,6 +468,27 @@ auto with_tension_law(const CaseModel& m, Fn&& fn) {
   return fn(PolynomialLaw(m.fit.get(), m.options.above_breaking));
 }
 
+// CaseResult::extension from the days (pooled time mean and variance: every
+// day has the same number of samples) and the fitted range in r.towline.
+void summarise_extension(CaseResult& r) {
+  ExtensionSummary& e = r.extension;
+  e.min_m = std::numeric_limits<double>::infinity();
+  e.max_m = -std::numeric_limits<double>::infinity();
+  double mean = 0.0, second = 0.0;
+  for (const DayResult& d : r.days) {
+    e.min_m = std::min(e.min_m, d.extension_min_m);
+    e.max_m = std::max(e.max_m, d.extension_max_m);
+    mean += d.extension_mean_m;
+    second += d.extension_variance_m2 + d.extension_mean_m * d.extension_mean_m;
+    if (d.extension_min_m < r.towline.fit_xi_min_m || d.extension_max_m > r.towline.fit_xi_max_m) {
+      ++e.days_outside_fit;
+    }
+  }
+  const double n = static_cast<double>(r.days.size());
+  e.mean_m = mean / n;
+  e.sd_m = std::sqrt(std::max(0.0, second / n - e.mean_m * e.mean_m));
+}
+
 }  // namespace
 
 DayStatistics simulate_day(const CaseModel& m, const DayForcing& forcing, const IntegratorOptions& options,
@@ -556,6 +577,11 @@ CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options) {
       out.tension_mean_n = st[l].tension_sum_n / n;
       out.tension_variance_n2 =
           std::max(0.0, st[l].tension_sum_sq_n2 / n - out.tension_mean_n * out.tension_mean_n);
+      out.extension_min_m = st[l].extension_min_m;
+      out.extension_max_m = st[l].extension_max_m;
+      out.extension_mean_m = st[l].extension_sum_m / n;
+      out.extension_variance_m2 =
+          std::max(0.0, st[l].extension_sum_sq_m2 / n - out.extension_mean_m * out.extension_mean_m);
       substeps[i] = st[l].substeps;
     }
     if (options.progress) {
@@ -573,6 +599,7 @@ CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options) {
   }
   r.slack_fraction /= days * m->synthesizer->plan().duration_s();
   r.snatch_events_per_day /= days;
+  summarise_extension(r);
 
   // 7. Statistics of the daily maxima.
   auto t = Clock::now();

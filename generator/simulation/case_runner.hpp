@@ -148,6 +148,22 @@ struct DayResult {
   int snatch_events = 0;
   double tension_mean_n = 0.0;      // time mean of tau over the day
   double tension_variance_n2 = 0.0;  // time variance of tau over the day
+  // The extension the tension law saw at the forcing samples (surge.hpp
+  // DayStatistics): its range, time mean and time variance over the day.
+  double extension_min_m = 0.0, extension_max_m = 0.0;
+  double extension_mean_m = 0.0, extension_variance_m2 = 0.0;
+};
+
+// Where the simulated days took the line, against the range of the samples
+// the polynomial was fitted to (towline FitSummary fit_xi_min_m ..
+// fit_xi_max_m). Outside it the law continues linearly from the range's edge
+// (EQ-CASE-1): a tension read there is an extrapolation of the cable
+// dynamics, so a planner and a maintainer should know how often it happens.
+struct ExtensionSummary {
+  double mean_m = 0.0;         // time mean over all days
+  double sd_m = 0.0;           // time standard deviation over all days (pooled)
+  double min_m = 0.0, max_m = 0.0;  // over all days
+  int days_outside_fit = 0;    // days whose range left [fit_xi_min_m, fit_xi_max_m]
 };
 
 struct CaseStatistics {
@@ -197,6 +213,7 @@ struct CaseResult {
   double slack_fraction = 0.0;
   double snatch_events_per_day = 0.0;
   bool above_breaking_strength = false;  // mean + dynamic_999 > breaking strength
+  ExtensionSummary extension;
   long substeps = 0;
   CaseTimings timings;
 };

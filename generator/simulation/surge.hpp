@@ -163,6 +163,13 @@ struct DayStatistics {
   double tension_sum_n = 0.0;   // sum of tau over the day's forcing samples (for the mean)
   double tension_sum_sq_n2 = 0.0;  // sum of tau^2 over them (for the variance)
   long samples = 0;             // forcing samples recorded
+  // The extension the tension law sees (EQ-SURGE-3, or its surge part under
+  // EQ-SURGE-6) at the forcing samples: where the day took the line,
+  // against the range a fitted law is valid over (towline FitSummary).
+  double extension_min_m = std::numeric_limits<double>::infinity();
+  double extension_max_m = -std::numeric_limits<double>::infinity();
+  double extension_sum_m = 0.0;
+  double extension_sum_sq_m2 = 0.0;
 };
 
 // The tension law: a type with, for T = double and T = lanes::Lanes<K, W>,
@@ -457,8 +464,9 @@ struct SurgeKernel {
   // count; each point stands for h. tau at the
   // interval's first substep is tau at forcing sample `sample_index`. (The
   // maximum is taken over each step by step_peak instead.)
+  // `xi` (the law's extension at the sample) is read on the first substep only.
   TOWDB_SURGE_INLINE void record(DayStatistics& stats, bool& was_slack, double tau, double h, bool first_substep,
-                                 std::size_t sample_index, std::vector<double>* trace) const {
+                                 std::size_t sample_index, std::vector<double>* trace, double xi) const {
     const bool slack = tau <= -mean;
     stats.min_tension_n = lanes::min(stats.min_tension_n, tau);
     if (slack) stats.slack_time_s += h;
@@ -469,7 +477,19 @@ struct SurgeKernel {
       stats.tension_sum_sq_n2 += tau * tau;
       ++stats.samples;
       if (trace) (*trace)[sample_index] = tau;
+      stats.extension_min_m = lanes::min(stats.extension_min_m, xi);
+      stats.extension_max_m = lanes::max(stats.extension_max_m, xi);
+      stats.extension_sum_m += xi;
+      stats.extension_sum_sq_m2 += xi * xi;
     }
+  }
+
+  // The extension the law sees at state y and forcing g (for the statistics).
+  template <typename T>
+  TOWDB_SURGE_INLINE T law_extension_only(const StateOf<T>& y, const ForcingOf<T>& g) const {
+    T xi, xi_dot;
+    law_extension(y, g, xi, xi_dot);
+    return xi;
   }
 
   // The largest tension on a step of length h from y0 (derivative f0, tension
@@ -540,7 +560,10 @@ struct SurgeKernel {
       const Forcing gm = m == 1 ? midpoint_forcing(f, c) : forcing_at(f, c, (j + 0.5) / m);
       const Forcing gb = j + 1 == m ? sample_at(f, c.i1) : forcing_at(f, c, static_cast<double>(j + 1) / m);
       double unused = 0.0;
-      if (recording) record(stats, was_slack, tau, h, j == 0, sample_index, trace);
+      if (recording) {
+        const double xi = j == 0 ? law_extension_only(y, sample_at(f, c.i)) : 0.0;
+        record(stats, was_slack, tau, h, j == 0, sample_index, trace, xi);
+      }
       const State k2 = derivative(axpy(y, 0.5 * h, k1), gm, &unused);
       const State k3 = derivative(axpy(y, 0.5 * h, k2), gm, &unused);
       const State k4 = derivative(axpy(y, h, k3), gb, &unused);
@@ -563,6 +586,7 @@ struct LaneStatistics {
   using V = lanes::Lanes<K, W>;
   using Mask = lanes::LaneMask<K, W>;
   V max_tension, min_tension, slack_time, sum, sum_sq;
+  V extension_min, extension_max, extension_sum, extension_sum_sq;
   Mask snatch_events, was_slack;  // counts; masks (-1 = slack)
   std::array<long, K> substeps{}, samples{};
 
@@ -575,6 +599,10 @@ struct LaneStatistics {
     s.tension_sum_n = sum[l];
     s.tension_sum_sq_n2 = sum_sq[l];
     s.samples = samples[l];
+    s.extension_min_m = extension_min[l];
+    s.extension_max_m = extension_max[l];
+    s.extension_sum_m = extension_sum[l];
+    s.extension_sum_sq_m2 = extension_sum_sq[l];
     slack = was_slack[l] != 0;
   }
   void from(std::size_t l, const DayStatistics& s, bool slack) {
@@ -586,10 +614,14 @@ struct LaneStatistics {
     sum.set(l, s.tension_sum_n);
     sum_sq.set(l, s.tension_sum_sq_n2);
     samples[l] = s.samples;
+    extension_min.set(l, s.extension_min_m);
+    extension_max.set(l, s.extension_max_m);
+    extension_sum.set(l, s.extension_sum_m);
+    extension_sum_sq.set(l, s.extension_sum_sq_m2);
     was_slack.set(l, slack ? -1 : 0);
   }
   // SurgeKernel::record for the first (only) substep of an interval.
-  TOWDB_SURGE_INLINE void record(V tau, double minus_mean, double h, std::size_t sample_index,
+  TOWDB_SURGE_INLINE void record(V tau, V xi, double minus_mean, double h, std::size_t sample_index,
                                  const std::array<std::vector<double>*, K>& trace) {
     const Mask slack = tau <= lanes::splat<V>(minus_mean);
     min_tension = lanes::min(min_tension, tau);
@@ -598,6 +630,10 @@ struct LaneStatistics {
     was_slack = slack;
     sum += tau;
     sum_sq += tau * tau;
+    extension_min = lanes::min(extension_min, xi);
+    extension_max = lanes::max(extension_max, xi);
+    extension_sum += xi;
+    extension_sum_sq += xi * xi;
     for (std::size_t l = 0; l < K; ++l) {
       ++samples[l];
       if (trace[l]) (*trace[l])[sample_index] = tau[l];
@@ -703,6 +739,8 @@ TOWDB_SURGE_INLINE std::array<DayStatistics, K> integrate_days(const SurgeParame
   detail::LaneStatistics<K, W> stats{};
   stats.max_tension = lanes::splat<V>(-kernel.mean);
   stats.min_tension = lanes::splat<V>(std::numeric_limits<double>::infinity());
+  stats.extension_min = lanes::splat<V>(std::numeric_limits<double>::infinity());
+  stats.extension_max = lanes::splat<V>(-std::numeric_limits<double>::infinity());
   for (std::size_t l = 0; l < K; ++l) {
     if (trace[l]) trace[l]->assign(n, 0.0);
   }
@@ -725,7 +763,7 @@ TOWDB_SURGE_INLINE std::array<DayStatistics, K> integrate_days(const SurgeParame
       const ForcingOf<V> gm = detail::midpoint_lanes<K, W>(f, c);
       const ForcingOf<V> gb = detail::sample_lanes<K, W>(f, c.i1);
       V unused, tau1;
-      if (recording) stats.record(tau, -kernel.mean, dt, sample_index, trace);
+      if (recording) stats.record(tau, kernel.law_extension_only(y, g0), -kernel.mean, dt, sample_index, trace);
       const StateOf<V> k2 = kernel.derivative(detail::axpy(y, 0.5 * dt, k1), gm, &unused);
       const StateOf<V> k3 = kernel.derivative(detail::axpy(y, 0.5 * dt, k2), gm, &unused);
       const StateOf<V> k4 = kernel.derivative(detail::axpy(y, dt, k3), gb, &unused);

@@ -140,6 +140,26 @@ TEST(SimulationCase, StatisticsAreTheMomentsFitOfTheDays) {  // case-3
   EXPECT_LE(r.statistics.ci_low_n, r.statistics.dynamic_999_n);
   EXPECT_GE(r.statistics.ci_high_n, r.statistics.dynamic_999_n);
   EXPECT_TRUE(std::isnan(r.statistics.empirical_999_n));  // 8 days < 5 / (1 - 0.999)
+  // The extension summary pools the days (each has the same number of samples):
+  // the whole record's mean and variance from the days' means and variances.
+  double lo = r.days[0].extension_min_m, hi = r.days[0].extension_max_m, m1 = 0.0, m2 = 0.0;
+  int outside = 0;
+  for (const auto& d : r.days) {
+    lo = std::min(lo, d.extension_min_m);
+    hi = std::max(hi, d.extension_max_m);
+    m1 += d.extension_mean_m;
+    m2 += d.extension_variance_m2 + d.extension_mean_m * d.extension_mean_m;
+    outside += d.extension_min_m < r.towline.fit_xi_min_m || d.extension_max_m > r.towline.fit_xi_max_m;
+  }
+  m1 /= static_cast<double>(r.days.size());
+  m2 /= static_cast<double>(r.days.size());
+  EXPECT_EQ(r.extension.min_m, lo);
+  EXPECT_EQ(r.extension.max_m, hi);
+  EXPECT_REL_CLOSE(r.extension.mean_m, m1, kRoundOffRelTol);
+  EXPECT_REL_CLOSE(r.extension.sd_m, std::sqrt(m2 - m1 * m1), 1e-9);  // a difference of squares
+  EXPECT_EQ(r.extension.days_outside_fit, outside);
+  EXPECT_LT(r.extension.min_m, r.extension.mean_m);
+  EXPECT_GT(r.extension.max_m, r.extension.mean_m);
 }
 
 TEST(SimulationCase, StraightSpringLanesEqualSingleDays) {  // case-4

@@ -13,6 +13,10 @@
 //   surge-6  EQ-SURGE-6 (non-surge tension linear, added): equals EQ-SURGE-4
 //            for a linear line; with immovable vessels on a cubic line the
 //            tension is k_ns xi_ns exactly, clamped at -T.
+//   surge-7  the extension statistics read the tension law's argument at the
+//            forcing samples: with immovable vessels it is xi_ns, sample for
+//            sample (and 0 under EQ-SURGE-6, whose law sees the surge part);
+//            on a linear spring without dashpot it is the sampled tension / k.
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -267,6 +271,10 @@ TEST(SurgeIntegrator, LockStepDaysEqualSingleDaysBitForBit) {  // surge-4
       EXPECT_EQ(together[l].samples, alone.samples) << "day " << l;
       EXPECT_EQ(bits(together[l].tension_sum_n), bits(alone.tension_sum_n)) << "day " << l;
       EXPECT_EQ(bits(together[l].tension_sum_sq_n2), bits(alone.tension_sum_sq_n2)) << "day " << l;
+      EXPECT_EQ(bits(together[l].extension_min_m), bits(alone.extension_min_m)) << "day " << l;
+      EXPECT_EQ(bits(together[l].extension_max_m), bits(alone.extension_max_m)) << "day " << l;
+      EXPECT_EQ(bits(together[l].extension_sum_m), bits(alone.extension_sum_m)) << "day " << l;
+      EXPECT_EQ(bits(together[l].extension_sum_sq_m2), bits(alone.extension_sum_sq_m2)) << "day " << l;
       ASSERT_EQ(lockstep_trace[l].size(), single_trace[l].size());
       for (std::size_t i = 0; i < single_trace[l].size(); ++i) {
         ASSERT_EQ(bits(lockstep_trace[l][i]), bits(single_trace[l][i])) << "day " << l << " sample " << i;
@@ -394,6 +402,57 @@ TEST(SurgeIntegrator, LinearNonSurgeTensionBypassesTheNonlinearLaw) {  // surge-
   EXPECT_REL_CLOSE(split.max_tension_n, 4.0e5, 1e-4);  // peaks read between steps (EQ-SURGE-5)
   EXPECT_NEAR(split.min_tension_n, -2.0e5, 1e-6);       // clamped at -T
   EXPECT_EQ(split.snatch_events, 50);                   // one slack-to-taut transition per 20 s cycle
+}
+
+TEST(SurgeIntegrator, ExtensionStatisticsReadTheLawsArgument) {  // surge-7, EQ-SURGE-3
+  // Immovable vessels: xi = x1 cos(a1) - x7 cos(a2) + xi_ns with x1, x7 of
+  // order F t^2 / M = 6e5 N (1100 s)^2 / 1e30 kg ~ 1e-18 m, far below the
+  // metres of xi_ns.
+  SurgeParameters p = tug_and_tow();
+  p.tug_mass_kg = p.tow_mass_kg = 1e30;
+  constexpr double kImmovableAbsTolM = 1e-12;
+  const LinearLine line{4.0e5, 0.0, 1.0e9};
+  const double dt = 0.5;
+  const std::size_t n = 2000;
+  DayForcing f = harmonic_tug_force(0.0, 1.0, dt, n);
+  const double w = 2.0 * kPi / 13.0;
+  double lo = 0.0, hi = 0.0, sum = 0.0, sum_sq = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) * dt;
+    f.xi_ns_m[i] = 1.5 * std::sin(w * t) + 0.25;
+    f.xi_ns_dot_m_s[i] = 1.5 * w * std::cos(w * t);
+    lo = i == 0 ? f.xi_ns_m[i] : std::min(lo, f.xi_ns_m[i]);
+    hi = i == 0 ? f.xi_ns_m[i] : std::max(hi, f.xi_ns_m[i]);
+    sum += f.xi_ns_m[i];
+    sum_sq += f.xi_ns_m[i] * f.xi_ns_m[i];
+  }
+  IntegratorOptions o;
+  o.warmup_s = 100.0;
+  const DayStatistics s = integrate_day(p, f, line, o);
+  ASSERT_EQ(s.samples, static_cast<long>(n));
+  EXPECT_NEAR(s.extension_min_m, lo, kImmovableAbsTolM);
+  EXPECT_NEAR(s.extension_max_m, hi, kImmovableAbsTolM);
+  EXPECT_NEAR(s.extension_sum_m, sum, n * kImmovableAbsTolM);
+  EXPECT_NEAR(s.extension_sum_sq_m2, sum_sq, n * 4.0 * kImmovableAbsTolM);  // 2 |xi| dxi, |xi| < 2 m
+  // EQ-SURGE-6: the law sees the surge part of the extension, which is 0 here.
+  p.linear_non_surge_tension = true;
+  p.non_surge_stiffness_n_m = 4.0e5;
+  const DayStatistics split = integrate_day(p, f, line, o);
+  EXPECT_NEAR(split.extension_min_m, 0.0, kImmovableAbsTolM);
+  EXPECT_NEAR(split.extension_max_m, 0.0, kImmovableAbsTolM);
+
+  // Moving vessels on a spring without dashpot: tau = k xi at every sample,
+  // so the sampled tension over k is the recorded extension.
+  const SurgeParameters q = tug_and_tow();
+  const DayForcing g = harmonic_tug_force(1.0e5, 2.0 * kPi / 20.0, 0.25, 4000);
+  std::vector<double> trace;
+  o.warmup_s = 3000.0;
+  const DayStatistics m = integrate_day(q, g, line, o, &trace);
+  const double k = line.k;
+  constexpr double kRoundingRelTol = 1e-12;  // k xi + 0 xi' against xi: one rounding
+  EXPECT_REL_CLOSE(m.extension_max_m, *std::max_element(trace.begin(), trace.end()) / k, kRoundingRelTol);
+  EXPECT_REL_CLOSE(m.extension_min_m, *std::min_element(trace.begin(), trace.end()) / k, kRoundingRelTol);
+  EXPECT_GT(m.extension_max_m, 0.1);  // the premise: the line really moved (tau amplitude / k ~ decimetres)
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 //                   tension is the mean plus the F = 0.999 dynamic tension, which
 //                   is the Type I quantile of the fitted u and alpha (thesis eq.
 //                   4.5-4.6) inside its confidence interval; 1 and 2 threads give
-//                   the same digits
+//                   the same digits; the line's extension lies around its mean
+//                   and is flagged where it left the polynomial's fitted range
 //   cli-simulate-2  bad input -> exit 2 with a message naming the flag, before
 //                   any computation, and no plot file written
 #include <cmath>
@@ -43,6 +44,16 @@ TEST(CliSimulate, JsonKeysAgreeWithEachOther) {  // cli-simulate-1
   EXPECT_REL_CLOSE(j.at("extreme_tension_lbf").get<double>(), 50000.0 + 1000.0 * dyn, kRoundOffRelTol);
   const double u = j.at("gumbel_u_kips").get<double>(), alpha = j.at("gumbel_alpha_per_kip").get<double>();
   EXPECT_REL_CLOSE(dyn, u - std::log(-std::log(0.999)) / alpha, kRoundOffRelTol);
+  // The line's extension against the polynomial's fitted range (ft).
+  const json& e = j.at("extension_ft");
+  EXPECT_LT(e.at("fit_min").get<double>(), 0.0);
+  EXPECT_GT(e.at("fit_max").get<double>(), 0.0);
+  EXPECT_LT(e.at("min").get<double>(), e.at("mean").get<double>());
+  EXPECT_GT(e.at("max").get<double>(), e.at("mean").get<double>());
+  EXPECT_GT(e.at("sd").get<double>(), 0.0);
+  const bool left = e.at("min").get<double>() < e.at("fit_min").get<double>() ||
+                    e.at("max").get<double>() > e.at("fit_max").get<double>();
+  EXPECT_EQ(e.at("days_outside_fit").get<int>() > 0, left);
   EXPECT_LE(j.at("ci_low_kips").get<double>(), dyn);
   EXPECT_GE(j.at("ci_high_kips").get<double>(), dyn);
   const CommandResult two = run_towdb(kCase + "--wind-kt 20 --days 4 --threads 2 --json");
