@@ -62,8 +62,9 @@ bool parse_int(const std::string& s, int& v) {
 
 constexpr const char* kJournalHeader =
     "case,tug,tow,speed_kt,wind_kt,heading_deg,length_ft,line,mean_lbf,days,dyn_kips,days_run,status,ours_kips,"
-    "ratio,ci_low_kips,ci_high_kips,hs_ft,slack_fraction,above_breaking,runtime_s,error";
-constexpr std::size_t kJournalColumns = 22;
+    "ratio,ci_low_kips,ci_high_kips,hs_ft,slack_fraction,above_breaking,runtime_s,extension_sd_ft,extension_min_ft,"
+    "extension_max_ft,fit_min_ft,fit_max_ft,days_outside_fit,error";
+constexpr std::size_t kJournalColumns = 28;
 
 template <class Key>
 std::vector<Agreement> grouped(const std::vector<const CaseOutcome*>& cases, const std::string& prefix, Key key) {
@@ -159,6 +160,12 @@ CaseOutcome run_one(const sweep::CalibrationRow& row, const io::ShipCatalog& cat
     out.ci_high_kips = units::n_to_kips(r.statistics.ci_high_n);
     out.slack_fraction = r.slack_fraction;
     out.above_breaking = r.above_breaking_strength;
+    out.extension_sd_ft = units::m_to_ft(r.extension.sd_m);
+    out.extension_min_ft = units::m_to_ft(r.extension.min_m);
+    out.extension_max_ft = units::m_to_ft(r.extension.max_m);
+    out.fit_min_ft = units::m_to_ft(r.towline.fit_xi_min_m);
+    out.fit_max_ft = units::m_to_ft(r.towline.fit_xi_max_m);
+    out.days_outside_fit = r.extension.days_outside_fit;
     if (!(std::isfinite(out.ours_kips) && out.ours_kips > 0.0)) {
       throw NumericalError("validation: dynamic tension = " + format_value(out.ours_kips) + " kips is not positive");
     }
@@ -283,6 +290,41 @@ Agreement agreement(const std::string& group, std::span<const double> ours, std:
   return a;
 }
 
+// Report::extension_by_line_heading over the simulated cases among `cases`.
+std::vector<Report::ExtensionGroup> extension_groups(const std::vector<const CaseOutcome*>& cases) {
+  std::map<std::string, std::vector<const CaseOutcome*>> groups;
+  for (const CaseOutcome* c : cases) {
+    if (!std::isfinite(c->extension_sd_ft)) continue;  // not simulated
+    std::ostringstream key;
+    key << c->row.line << " " << std::setw(3) << std::setfill('0') << std::lround(c->row.heading_deg) << " deg";
+    groups[key.str()].push_back(c);
+  }
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  };
+  std::vector<Report::ExtensionGroup> out;
+  for (const auto& [name, members] : groups) {
+    Report::ExtensionGroup g;
+    g.group = name;
+    g.count = static_cast<int>(members.size());
+    std::vector<double> ratio, sd, reach;
+    for (const CaseOutcome* c : members) {
+      ratio.push_back(c->ratio());
+      sd.push_back(c->extension_sd_ft);
+      reach.push_back(std::max(c->extension_min_ft / c->fit_min_ft, c->extension_max_ft / c->fit_max_ft));
+      g.cases_outside_fit += c->days_outside_fit > 0;
+      g.cases_slack += c->slack_fraction > 0.0;
+    }
+    g.median_ratio = median(ratio);
+    g.median_sd_ft = median(sd);
+    g.median_reach = median(reach);
+    out.push_back(g);
+  }
+  return out;
+}
+
 Report make_report(std::vector<CaseOutcome> outcomes, const Targets& targets) {
   Report rep;
   rep.outcomes = std::move(outcomes);
@@ -321,6 +363,7 @@ Report make_report(std::vector<CaseOutcome> outcomes, const Targets& targets) {
     return os.str() + " deg";
   });
   rep.by_wind = grouped(valid, "wind ", [](const CaseOutcome& c) { return fixed(c.row.wind_kt, 0) + " kt"; });
+  rep.extension_by_line_heading = extension_groups(valid);
   if (rep.valid.count > 0) {
     rep.median_ok = rep.valid.median_ratio >= targets.median_low && rep.valid.median_ratio <= targets.median_high;
     rep.spearman_ok = rep.valid.spearman >= targets.spearman_min;
@@ -359,6 +402,19 @@ std::string report_markdown(const Report& rep, const std::string& run_note, cons
   agreement_table(os, rep.by_heading);
   os << "## By wind speed (<= 300 kips)\n\n";
   agreement_table(os, rep.by_wind);
+  if (!rep.extension_by_line_heading.empty()) {
+    os << "## The line's extension by line type and heading (<= 300 kips)\n\n"
+       << "Reach: the largest excursion over the fitted half-range on its side (above 1: the polynomial was "
+          "continued linearly, EQ-CASE-1).\n\n"
+       << "| group | cases | median ratio | extension sd ft (median) | reach (median) | cases outside the fitted "
+          "range | cases ever slack |\n|---|---:|---:|---:|---:|---:|---:|\n";
+    for (const Report::ExtensionGroup& g : rep.extension_by_line_heading) {
+      os << "| " << g.group << " | " << g.count << " | " << fixed(g.median_ratio, 2) << " | "
+         << fixed(g.median_sd_ft, 1) << " | " << fixed(g.median_reach, 2) << " | " << g.cases_outside_fit << " | "
+         << g.cases_slack << " |\n";
+    }
+    os << "\n";
+  }
 
   std::vector<const CaseOutcome*> ok;
   for (const CaseOutcome& c : rep.outcomes) {
@@ -415,7 +471,9 @@ std::string journal_line(const CaseOutcome& c) {
      << "," << (c.status == CaseStatus::kOk ? "ok" : "failed") << "," << number17(c.ours_kips) << ","
      << number17(c.status == CaseStatus::kOk ? c.ratio() : 0.0) << "," << number17(c.ci_low_kips) << ","
      << number17(c.ci_high_kips) << "," << number17(c.hs_ft) << "," << number17(c.slack_fraction) << ","
-     << (c.above_breaking ? 1 : 0) << "," << number17(c.runtime_s) << "," << one_line(c.error);
+     << (c.above_breaking ? 1 : 0) << "," << number17(c.runtime_s) << "," << number17(c.extension_sd_ft) << ","
+     << number17(c.extension_min_ft) << "," << number17(c.extension_max_ft) << "," << number17(c.fit_min_ft) << ","
+     << number17(c.fit_max_ft) << "," << c.days_outside_fit << "," << one_line(c.error);
   return os.str();
 }
 
@@ -443,14 +501,17 @@ std::vector<CaseOutcome> parse_journal(const std::string& text) {
                     parse_double(f[13], c.ours_kips) && parse_double(f[15], c.ci_low_kips) &&
                     parse_double(f[16], c.ci_high_kips) && parse_double(f[17], c.hs_ft) &&
                     parse_double(f[18], c.slack_fraction) && parse_int(f[19], above) &&
-                    parse_double(f[20], c.runtime_s);
+                    parse_double(f[20], c.runtime_s) && parse_double(f[21], c.extension_sd_ft) &&
+                    parse_double(f[22], c.extension_min_ft) && parse_double(f[23], c.extension_max_ft) &&
+                    parse_double(f[24], c.fit_min_ft) && parse_double(f[25], c.fit_max_ft) &&
+                    parse_int(f[26], c.days_outside_fit);
     if (!ok) continue;
     r.tug = f[1];
     r.tow = f[2];
     r.line = f[7];
     c.status = f[12] == "ok" ? CaseStatus::kOk : CaseStatus::kFailed;
     c.above_breaking = above != 0;
-    c.error = f[21];
+    c.error = f[27];
     out.push_back(c);
   }
   return out;

@@ -45,6 +45,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -112,6 +113,15 @@ struct CaseOutcome {
   double slack_fraction = 0.0;      // of the simulated time
   bool above_breaking = false;      // mean + dynamic above the towline's breaking strength
   double runtime_s = 0.0;           // wall time of the case
+  // Where the simulated days took the line (CaseResult::extension) against
+  // the polynomial's fitted range [ft]; NaN (and days_outside_fit -1) when
+  // the answer did not come from a simulation (a database's answers).
+  double extension_sd_ft = std::numeric_limits<double>::quiet_NaN();
+  double extension_min_ft = std::numeric_limits<double>::quiet_NaN();
+  double extension_max_ft = std::numeric_limits<double>::quiet_NaN();
+  double fit_min_ft = std::numeric_limits<double>::quiet_NaN();
+  double fit_max_ft = std::numeric_limits<double>::quiet_NaN();
+  int days_outside_fit = -1;
 
   double ratio() const { return ours_kips / row.dynamic_999_kips; }  // EQ-VALIDATION-1
 };
@@ -171,6 +181,17 @@ struct Report {
   Agreement above_limit;               // ok cases with thesis tension > limit (count 0: none)
   Agreement all;                       // every ok case
   std::vector<Agreement> by_tow, by_tug, by_line, by_heading, by_wind;  // valid cases only
+  // The line's extension by line type and heading (valid simulated cases).
+  struct ExtensionGroup {
+    std::string group;             // "wire 000 deg"
+    int count = 0;
+    double median_ratio = 0.0;
+    double median_sd_ft = 0.0;     // median over the cases of the extension's sd
+    double median_reach = 0.0;     // median of the largest excursion / the fitted half-range on its side
+    int cases_outside_fit = 0;     // with at least one day outside the fitted range
+    int cases_slack = 0;           // with any slack time
+  };
+  std::vector<ExtensionGroup> extension_by_line_heading;
   int failed = 0;
   bool median_ok = false, spearman_ok = false, within_ok = false;
 };

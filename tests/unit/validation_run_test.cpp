@@ -2,6 +2,7 @@
 // database-unit -> SI conversion of a calibration row, the resume journal,
 // and a failing case that is reported instead of aborting the run.
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -131,9 +132,17 @@ TEST(ValidationJournal, RoundTripsBitExactlyAndSkipsBrokenLines) {
   a.slack_fraction = 1e-7;
   a.above_breaking = true;
   a.runtime_s = 3.5;
+  a.extension_sd_ft = 1.0 / 3.0;
+  a.extension_min_ft = -25.6;
+  a.extension_max_ft = 10.4;
+  a.fit_min_ft = -19.685039370078741;
+  a.fit_max_ft = 19.685039370078741;
+  a.days_outside_fit = 7;
   CaseOutcome b = a;
   b.row.case_number = 202;
   b.status = CaseStatus::kFailed;
+  b.extension_sd_ft = std::numeric_limits<double>::quiet_NaN();  // a failed or database case: unknown
+  b.days_outside_fit = -1;
   b.error = "NumericalError: catenary, iteration 3, residual 1e-3, \"x\"\nmore";
   const std::string text = journal_header() + "\n" + journal_line(a) + "\n" + journal_line(b) + "\n" +
                            "203,T-ATF 166,FFG 7,9";  // an interrupted last line
@@ -148,6 +157,12 @@ TEST(ValidationJournal, RoundTripsBitExactlyAndSkipsBrokenLines) {
   EXPECT_EQ(back[0].row.dynamic_999_kips, 78.7);
   EXPECT_EQ(back[0].days_run, 25);
   EXPECT_TRUE(back[0].above_breaking);
+  EXPECT_EQ(back[0].extension_sd_ft, a.extension_sd_ft);
+  EXPECT_EQ(back[0].extension_min_ft, a.extension_min_ft);
+  EXPECT_EQ(back[0].fit_max_ft, a.fit_max_ft);
+  EXPECT_EQ(back[0].days_outside_fit, 7);
+  EXPECT_TRUE(std::isnan(back[1].extension_sd_ft));
+  EXPECT_EQ(back[1].days_outside_fit, -1);
   EXPECT_EQ(back[1].status, CaseStatus::kFailed);
   EXPECT_EQ(back[1].error.find(','), std::string::npos);
   EXPECT_EQ(back[1].error.find('\n'), std::string::npos);
