@@ -299,11 +299,6 @@ std::vector<Report::ExtensionGroup> extension_groups(const std::vector<const Cas
     key << c->row.line << " " << std::setw(3) << std::setfill('0') << std::lround(c->row.heading_deg) << " deg";
     groups[key.str()].push_back(c);
   }
-  const auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-  };
   std::vector<Report::ExtensionGroup> out;
   for (const auto& [name, members] : groups) {
     Report::ExtensionGroup g;
