@@ -1,6 +1,7 @@
 // Agreement measures of the thesis-database validation (validation.hpp
 // EQ-VALIDATION-1..5) against closed forms and a published worked example.
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -116,6 +117,59 @@ TEST(ValidationAgreement, ReportSplitsAtTheThesisValidityLimitAndChecksTargets) 
   ASSERT_EQ(rep.by_tow.size(), 2u);  // FFG 7 and YRBM (LHA 1 is above the limit)
   EXPECT_EQ(rep.by_tow[0].group, "tow FFG 7");
   EXPECT_REL_CLOSE(rep.by_tow[1].median_ratio, 2.1, kExactRelTol);  // (1.2 + 3) / 2
+}
+
+TEST(ValidationAgreement, ExtensionTableGroupsSimulatedCasesByLineAndHeading) {
+  // Three simulated wire cases at 0 deg and one fiber case at 180 deg, plus a
+  // database answer (extension unknown) that the table must leave out.
+  const auto make = [](int n, const char* line, double heading, double sd, double lo, double hi, int outside,
+                       double slack) {
+    CaseOutcome c;
+    c.row.case_number = n;
+    c.row.line = line;
+    c.row.heading_deg = heading;
+    c.row.dynamic_999_kips = 100.0;
+    c.ours_kips = 50.0 * n;
+    c.status = CaseStatus::kOk;
+    c.extension_sd_ft = sd;
+    c.extension_min_ft = lo;
+    c.extension_max_ft = hi;
+    c.fit_min_ft = -20.0;
+    c.fit_max_ft = 10.0;
+    c.days_outside_fit = outside;
+    c.slack_fraction = slack;
+    return c;
+  };
+  std::vector<CaseOutcome> cases = {make(1, "wire", 0.0, 1.0, -5.0, 4.0, 0, 0.0),    // reach max(0.25, 0.4)
+                                    make(2, "wire", 0.0, 3.0, -30.0, 6.0, 4, 0.01),  // reach max(1.5, 0.6)
+                                    make(3, "wire", 0.0, 2.0, -2.0, 9.0, 0, 0.0),    // reach max(0.1, 0.9)
+                                    make(4, "fiber", 180.0, 7.0, -10.0, 20.0, 9, 0.0)};
+  CaseOutcome from_database;
+  from_database.row.case_number = 5;
+  from_database.row.line = "wire";
+  from_database.row.dynamic_999_kips = 100.0;
+  from_database.ours_kips = 90.0;
+  from_database.status = CaseStatus::kOk;  // extension NaN, days_outside_fit -1 by default
+  cases.push_back(from_database);
+  const Report rep = make_report(cases);
+  ASSERT_EQ(rep.extension_by_line_heading.size(), 2u);
+  const auto& fiber = rep.extension_by_line_heading[0];  // "fiber 180 deg" sorts before "wire 000 deg"
+  const auto& wire = rep.extension_by_line_heading[1];
+  EXPECT_EQ(fiber.group, "fiber 180 deg");
+  EXPECT_EQ(fiber.count, 1);
+  EXPECT_REL_CLOSE(fiber.median_reach, 2.0, kExactRelTol);
+  EXPECT_EQ(wire.group, "wire 000 deg");
+  EXPECT_EQ(wire.count, 3);                                  // not the database's answer
+  EXPECT_REL_CLOSE(wire.median_ratio, 1.0, kExactRelTol);    // 0.5, 1.0, 1.5
+  EXPECT_REL_CLOSE(wire.median_sd_ft, 2.0, kExactRelTol);
+  EXPECT_REL_CLOSE(wire.median_reach, 0.9, kExactRelTol);    // 0.4, 1.5, 0.9
+  EXPECT_EQ(wire.cases_outside_fit, 1);
+  EXPECT_EQ(wire.cases_slack, 1);
+  EXPECT_NE(report_markdown(rep, "note").find("| wire 000 deg | 3 | 1.00 | 2.0 | 0.90 | 1 | 1 |"), std::string::npos);
+  // Only database answers: no extension table at all.
+  const Report db = make_report({from_database});
+  EXPECT_TRUE(db.extension_by_line_heading.empty());
+  EXPECT_EQ(report_markdown(db, "note").find("extension by line"), std::string::npos);
 }
 
 }  // namespace
