@@ -933,11 +933,11 @@ TEST_F(QueryTest, SpeedProfilesMakeDataProportionalToThemExactBetweenSpeeds) {
 
   // Both profiles: a heading factor times a speed factor, exact between headings and speeds.
   GridSpec both = g;
-  both.u_kips = [](double s, double w, double h, double l, double m) {
-    return u_exponential(0.0, w, 0.0, l, m) * speed_profile_at(s) * profile_at(h);
+  both.u_kips = [](double s, double w, double h, double l, double mean) {
+    return u_exponential(0.0, w, 0.0, l, mean) * speed_profile_at(s) * profile_at(h);
   };
-  both.beta_kips = [](double s, double w, double h, double l, double m) {
-    return beta_exponential(0.0, w, 0.0, l, m) * speed_profile_at(s) * profile_at(h);
+  both.beta_kips = [](double s, double w, double h, double l, double mean) {
+    return beta_exponential(0.0, w, 0.0, l, mean) * speed_profile_at(s) * profile_at(h);
   };
   const std::string both_path = write(grid_cases(both), "both.towdb");
   write_speed_profiles(both_path, speed_profile_points(), 5.0, 0.25);
