@@ -290,14 +290,19 @@ Agreement agreement(const std::string& group, std::span<const double> ours, std:
   return a;
 }
 
+// A heading as a group key, zero-padded so that a map orders 0, 60, 120, 180: "060 deg".
+std::string heading_key(double heading_deg) {
+  std::ostringstream os;
+  os << std::setw(3) << std::setfill('0') << std::lround(heading_deg) << " deg";
+  return os.str();
+}
+
 // Report::extension_by_line_heading over the simulated cases among `cases`.
 std::vector<Report::ExtensionGroup> extension_groups(const std::vector<const CaseOutcome*>& cases) {
   std::map<std::string, std::vector<const CaseOutcome*>> groups;
   for (const CaseOutcome* c : cases) {
     if (!std::isfinite(c->extension_sd_ft)) continue;  // not simulated
-    std::ostringstream key;
-    key << c->row.line << " " << std::setw(3) << std::setfill('0') << std::lround(c->row.heading_deg) << " deg";
-    groups[key.str()].push_back(c);
+    groups[c->row.line + " " + heading_key(c->row.heading_deg)].push_back(c);
   }
   std::vector<Report::ExtensionGroup> out;
   for (const auto& [name, members] : groups) {
@@ -351,12 +356,7 @@ Report make_report(std::vector<CaseOutcome> outcomes, const Targets& targets) {
   rep.by_tow = grouped(valid, "tow ", [](const CaseOutcome& c) { return c.row.tow; });
   rep.by_tug = grouped(valid, "tug ", [](const CaseOutcome& c) { return c.row.tug; });
   rep.by_line = grouped(valid, "line ", [](const CaseOutcome& c) { return c.row.line; });
-  rep.by_heading = grouped(valid, "heading ", [](const CaseOutcome& c) {
-    // Zero-padded so the map orders 0, 60, 120, 180.
-    std::ostringstream os;
-    os << std::setw(3) << std::setfill('0') << static_cast<int>(std::lround(c.row.heading_deg));
-    return os.str() + " deg";
-  });
+  rep.by_heading = grouped(valid, "heading ", [](const CaseOutcome& c) { return heading_key(c.row.heading_deg); });
   rep.by_wind = grouped(valid, "wind ", [](const CaseOutcome& c) { return fixed(c.row.wind_kt, 0) + " kt"; });
   rep.extension_by_line_heading = extension_groups(valid);
   if (rep.valid.count > 0) {
