@@ -574,14 +574,15 @@ CaseResult run_case(const CaseInputs& inputs, const CaseOptions& options) {
       out.slack_time_s = st[l].slack_time_s;
       out.snatch_events = st[l].snatch_events;
       const double n = static_cast<double>(st[l].samples);
-      out.tension_mean_n = st[l].tension_sum_n / n;
-      out.tension_variance_n2 =
-          std::max(0.0, st[l].tension_sum_sq_n2 / n - out.tension_mean_n * out.tension_mean_n);
+      // Time mean and variance of a quantity from its sum and sum of squares over the samples.
+      const auto moments = [n](double sum, double sum_sq, double& mean, double& variance) {
+        mean = sum / n;
+        variance = std::max(0.0, sum_sq / n - mean * mean);
+      };
+      moments(st[l].tension_sum_n, st[l].tension_sum_sq_n2, out.tension_mean_n, out.tension_variance_n2);
       out.extension_min_m = st[l].extension_min_m;
       out.extension_max_m = st[l].extension_max_m;
-      out.extension_mean_m = st[l].extension_sum_m / n;
-      out.extension_variance_m2 =
-          std::max(0.0, st[l].extension_sum_sq_m2 / n - out.extension_mean_m * out.extension_mean_m);
+      moments(st[l].extension_sum_m, st[l].extension_sum_sq_m2, out.extension_mean_m, out.extension_variance_m2);
       substeps[i] = st[l].substeps;
     }
     if (options.progress) {
