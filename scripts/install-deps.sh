@@ -23,6 +23,7 @@ packages=(
   python3-dev pybind11-dev   # the Python module (TOWDB_PYTHON)
   python3-pytest python3-pandas   # its tests (and the DataFrame it returns)
   chromium chromium-driver python3-selenium   # the page's test in headless Chromium
+  xz-utils             # scripts/pack-db.sh: the bundled database's archive (db/README.md)
 )
 
 missing=()

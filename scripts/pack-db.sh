@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Packs db/towdb.sqlite into db/towdb.sqlite.tar.xz, the form in which the repository
+# stores the bundled database (db/README.md, "Storage"); the build extracts it again
+# (db/CMakeLists.txt). Run it after a rebuild of the bundled database, then commit the
+# archive. The archive is reproducible: fixed member time, owner and order.
+set -euo pipefail
+cd "$(dirname "$0")/../db"
+if [ ! -f towdb.sqlite ]; then
+  echo "pack-db: db/towdb.sqlite not found (build it first: db/README.md)" >&2
+  exit 2
+fi
+tmp=towdb.sqlite.tar.xz.tmp
+trap 'rm -f "$tmp"' EXIT
+tar --sort=name --mtime='2026-01-01 00:00Z' --owner=0 --group=0 --numeric-owner \
+    --format=gnu -cf - towdb.sqlite | xz -9e --threads=1 > "$tmp"
+mv "$tmp" towdb.sqlite.tar.xz
+trap - EXIT
+echo "pack-db: db/towdb.sqlite.tar.xz $(stat -c %s towdb.sqlite.tar.xz) bytes" \
+     "(db/towdb.sqlite $(stat -c %s towdb.sqlite) bytes)"
