@@ -1,5 +1,7 @@
 # Extracts the bundled database from its archive (db/CMakeLists.txt): when
-# DATABASE is missing or ARCHIVE is newer. Extracts into a scratch directory and
+# DATABASE is missing or ARCHIVE is newer (a pull); a DATABASE newer than the
+# archive (a local rebuild not yet packed with scripts/pack-db.sh) is left alone.
+# Extracts into a scratch directory and
 # renames, so an interrupted build never leaves a half-written database.
 # Usage: cmake -DARCHIVE=<towdb.sqlite.tar.xz> -DDATABASE=<towdb.sqlite> -P extract.cmake
 if(NOT ARCHIVE OR NOT DATABASE)

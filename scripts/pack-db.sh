@@ -15,5 +15,8 @@ tar --sort=name --mtime='2026-01-01 00:00Z' --owner=0 --group=0 --numeric-owner 
     --format=gnu -cf - towdb.sqlite | xz -9e --threads=1 > "$tmp"
 mv "$tmp" towdb.sqlite.tar.xz
 trap - EXIT
+# The file is what the archive holds: keep it the newer, so that the next build does not
+# extract it again (db/extract.cmake compares the two times).
+touch towdb.sqlite
 echo "pack-db: db/towdb.sqlite.tar.xz $(stat -c %s towdb.sqlite.tar.xz) bytes" \
      "(db/towdb.sqlite $(stat -c %s towdb.sqlite) bytes)"
