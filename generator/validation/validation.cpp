@@ -101,6 +101,10 @@ void RunOptions::validate() const {
   require_input(response_frequencies >= 8 && response_frequencies <= 400, "RunOptions::response_frequencies",
                 response_frequencies, "an integer in [8, 400]");
   require_input(num_threads <= 1024, "RunOptions::num_threads", num_threads, "<= 1024 (<= 0: all cores)");
+  require_input(std::isfinite(encounter_cutoff_rad_s) && encounter_cutoff_rad_s >= 1.0 &&
+                    encounter_cutoff_rad_s <= 3.0,
+                "RunOptions::encounter_cutoff_rad_s", encounter_cutoff_rad_s,
+                "a number in [1, 3] rad/s (the transfer functions end at 3 rad/s)");
 }
 
 int simulated_days(const sweep::CalibrationRow& row, const RunOptions& options) {
@@ -139,6 +143,7 @@ simulation::CaseOptions case_options(const RunOptions& options) {
   o.linear_non_surge_tension = options.linear_non_surge_tension;
   o.non_surge_stiffness = options.non_surge_stiffness;
   o.nonnegative_wave_damping = options.nonnegative_wave_damping;
+  o.record.encounter_cutoff_rad_s = options.encounter_cutoff_rad_s;
   if (options.thesis_towline_fit) {
     o.towline.hold_static_stiffness = false;
     o.towline.max_run_weight_exponent = 0.0;

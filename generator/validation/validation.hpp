@@ -84,6 +84,10 @@ struct RunOptions {
   simulation::CaseOptions::NonSurgeStiffness non_surge_stiffness = simulation::CaseOptions::NonSurgeStiffness::kA10;
   // Diagnostic (issue 17): CaseOptions::nonnegative_wave_damping.
   bool nonnegative_wave_damping = false;
+  // Diagnostic (issue 17): the encounter-frequency cutoff of the forcing
+  // records (CaseOptions::record, thesis eq. 3-22); the chain's is 3 rad/s,
+  // the thesis's 5D grid ends at 2 rad/s. [1, 3] rad/s.
+  double encounter_cutoff_rad_s = 3.0;
   void validate() const;
 };
 

@@ -63,6 +63,33 @@ TEST(ValidationRunOptions, RejectsOutOfRangeFields) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("response_frequencies"), std::string::npos) << e.what();
   }
+  // The encounter cutoff: [1, 3] rad/s (the transfer functions end at 3 rad/s).
+  o = RunOptions{};
+  o.encounter_cutoff_rad_s = 2.0;
+  EXPECT_NO_THROW(o.validate());
+  o.encounter_cutoff_rad_s = 0.5;
+  EXPECT_THROW(o.validate(), InputError);
+  o.encounter_cutoff_rad_s = 3.5;
+  EXPECT_THROW(o.validate(), InputError);
+}
+
+TEST(ValidationRunOne, EncounterCutoffReachesTheRecords) {
+  // Diagnostic of issue 17 (thesis eq. 3-22, the 5D grid's 2 rad/s): in head
+  // seas at 9 kt a PM sea of 20 kt meets encounter frequencies above 2 rad/s
+  // (w = 1.3 rad/s meets w_e = w + w^2 U / g = 2.1 rad/s), so a 2 rad/s cutoff
+  // must change the case's outcome; the default (3 rad/s) is the chain's.
+  sweep::CalibrationRow r = thesis_case_201();
+  r.heading_deg = 180.0;
+  RunOptions o;
+  o.min_days = 10;
+  o.days_scale = 0.001;
+  const CaseOutcome full = run_one(r, catalog(), o);
+  o.encounter_cutoff_rad_s = 2.0;
+  const CaseOutcome cut = run_one(r, catalog(), o);
+  ASSERT_EQ(full.status, CaseStatus::kOk) << full.error;
+  ASSERT_EQ(cut.status, CaseStatus::kOk) << cut.error;
+  EXPECT_NE(full.ours_kips, cut.ours_kips);
+  EXPECT_GT(cut.ours_kips, 0.0);
 }
 
 TEST(ValidationRunOptions, DaysScaleRoundsAndRespectsTheFloor) {
