@@ -62,7 +62,7 @@ struct ValidateArgs {
   bool linear_non_surge_tension = false;
   std::string non_surge_stiffness = "a10";
   bool nonnegative_wave_damping = false;
-  double encounter_cutoff_rad_s = 3.0;
+  double encounter_cutoff_rad_s = simulation::kEncounterCutoff_rad_s;
   std::string database;  // --database: answers of this database instead of simulations
 };
 
@@ -138,7 +138,9 @@ std::string run_signature(const validation::RunOptions& o, const io::ShipCatalog
     os << " non_surge_stiffness=" << static_cast<int>(o.non_surge_stiffness);
   }
   if (o.nonnegative_wave_damping) os << " nonnegative_wave_damping=1";
-  if (o.encounter_cutoff_rad_s != 3.0) os << " encounter_cutoff_rad_s=" << fmt(o.encounter_cutoff_rad_s);
+  if (o.encounter_cutoff_rad_s != simulation::kEncounterCutoff_rad_s) {
+    os << " encounter_cutoff_rad_s=" << fmt(o.encounter_cutoff_rad_s);
+  }
   os << " ships_sha256=" << io::sha256_hex(hashes) << "\n";
   return os.str();
 }
@@ -334,7 +336,9 @@ std::string run_note(const ValidateArgs& a, const std::vector<validation::CaseOu
   if (a.linear_non_surge_tension) note << " --linear-non-surge-tension";
   if (a.non_surge_stiffness != "a10") note << " --non-surge-stiffness " << a.non_surge_stiffness;
   if (a.nonnegative_wave_damping) note << " --nonnegative-wave-damping";
-  if (a.encounter_cutoff_rad_s != 3.0) note << " --encounter-cutoff-rad-s " << fmt(a.encounter_cutoff_rad_s);
+  if (a.encounter_cutoff_rad_s != simulation::kEncounterCutoff_rad_s) {
+    note << " --encounter-cutoff-rad-s " << fmt(a.encounter_cutoff_rad_s);
+  }
   note << "`. Simulated days per case = max(" << a.min_days << ", round(" << fmt(a.days_scale)
        << " x thesis days)); seed = thesis case number. Sum of case run times " << fmt(case_time_s, 0)
        << " s (this invocation: " << fmt(wall_s, 0) << " s wall, " << reused << " cases reused from the journal).";
@@ -557,7 +561,7 @@ void add_validate_command(CLI::App& app, Context& ctx) {
   c->add_option("--encounter-cutoff-rad-s", a->encounter_cutoff_rad_s,
                 "Diagnostic: encounter-frequency cutoff of the forcing records (default 3; the thesis's 5D grid "
                 "ends at 2)")
-      ->check(number_in(1.0, 3.0));
+      ->check(number_in(1.0, simulation::kEncounterCutoff_rad_s));
   CLI::Option* database = c->add_option(
       "--database", a->database,
       "Ask each case of a towdb database (query library, the thesis's inputs) instead of simulating it");

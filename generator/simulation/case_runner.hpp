@@ -77,6 +77,12 @@ struct CaseInputs {
   void validate() const;
 };
 
+// Encounter frequencies above 3 rad/s do not move ships of these sizes
+// (thesis 3.7: "higher frequencies do not effect ship motions"); the chain's
+// cutoff of the forcing records (the dropped energy is reported as
+// retained_variance_fraction).
+inline constexpr double kEncounterCutoff_rad_s = 3.0;
+
 struct CaseOptions {
   towline::TowlineFitOptions towline;  // cable dynamics and polynomial fit
   towline::AboveBreakingModel above_breaking = towline::AboveBreakingModel::kPolynomial;  // thesis default
@@ -126,10 +132,7 @@ struct CaseOptions {
   bool wave_surge_damping = true;      // thesis 3.5
   sea::RecordOptions record = [] {
     sea::RecordOptions o;
-    // Encounter frequencies above 3 rad/s do not move ships of these sizes
-    // (thesis 3.7: "higher frequencies do not effect ship motions"); the
-    // dropped energy is reported as retained_variance_fraction.
-    o.encounter_cutoff_rad_s = 3.0;
+    o.encounter_cutoff_rad_s = kEncounterCutoff_rad_s;
     o.max_time_step_s = 1.0;           // forcing sampled at least every second
     return o;
   }();

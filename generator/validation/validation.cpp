@@ -102,7 +102,7 @@ void RunOptions::validate() const {
                 response_frequencies, "an integer in [8, 400]");
   require_input(num_threads <= 1024, "RunOptions::num_threads", num_threads, "<= 1024 (<= 0: all cores)");
   require_input(std::isfinite(encounter_cutoff_rad_s) && encounter_cutoff_rad_s >= 1.0 &&
-                    encounter_cutoff_rad_s <= 3.0,
+                    encounter_cutoff_rad_s <= simulation::kEncounterCutoff_rad_s,
                 "RunOptions::encounter_cutoff_rad_s", encounter_cutoff_rad_s,
                 "a number in [1, 3] rad/s (the transfer functions end at 3 rad/s)");
 }

@@ -87,7 +87,7 @@ struct RunOptions {
   // Diagnostic (issue 17): the encounter-frequency cutoff of the forcing
   // records (CaseOptions::record, thesis eq. 3-22); the chain's is 3 rad/s,
   // the thesis's 5D grid ends at 2 rad/s. [1, 3] rad/s.
-  double encounter_cutoff_rad_s = 3.0;
+  double encounter_cutoff_rad_s = simulation::kEncounterCutoff_rad_s;
   void validate() const;
 };
 
