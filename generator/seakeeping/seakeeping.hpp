@@ -133,6 +133,13 @@
 //               likewise the z n_1 part of the pitch moment (n_5 = z n_1 - x n_3),
 //               F5 += i k cos mu rho g int e^{-ikx cos mu} int int_A z e^{kz - iky sin mu} dA dx,
 //               which with the mass coupling M15 = m z_G makes pitch -> wave slope.
+//               Diffraction (ResponseOptions::surge_diffraction, default off): the
+//               long-wave limit of the exciting force on a body, F = (rho V + A11) du/dt
+//               (G. I. Taylor; Newman, Marine Hydrodynamics, 1977, sec. 4.15), with the
+//               added-mass part driven by the fluid acceleration the moving hull meets,
+//               i w_e u, while Froude-Krylov's pressure gradient carries i w u:
+//               F1_D = (A11 / (rho V)) (w_h / w) F1_FK. With it a free hull in long waves
+//               at rest surges with the water (|x1| -> 1); without, m / (m + A11).
 //   EQ-STRIP-8  Roll: B44 += 2 zeta_roll sqrt((M44 + A44) C44) (hull.roll_damping_ratio).
 //   EQ-STRIP-9  Motions: [-w^2 (M + A) + i w B + C] x = F.
 //   EQ-STRIP-10 Encounter frequency floor: the hydrodynamics and the motion
@@ -194,6 +201,9 @@ struct ResponseOptions {
   bool transom_terms = true;                   // STF aft-end terms (EQ-STRIP-2, -4)
   // EQ-AR-4: Gerritsma-Beukelman aft of beam (cos mu > 0) when true; else R_aw = 0 there.
   bool added_resistance_aft_of_beam = false;
+  // EQ-STRIP-7: the surge diffraction force (A11 / rho V)(w_h / w) F1_FK when
+  // true; Froude-Krylov alone when false (the chain's default; issue 17 lead).
+  bool surge_diffraction = false;
   int num_threads = 1;                         // frequencies in parallel; <= 0 = all cores
 
   void validate() const;

@@ -288,6 +288,11 @@ VesselResponse respond(const model::Vessel& vessel, double speed, double heading
   // Surge (EQ-STRIP-7).
   r.added_mass(kSurge, kSurge) = hull.surge_added_mass_ratio * hull.displacement_kg;
   add_exciting_forces(frame, r);
+  if (options.surge_diffraction) {  // EQ-STRIP-7, diffraction
+    // A11 / (rho V): the displacement mass is rho V.
+    r.diffraction_per_m(kSurge) = hull.surge_added_mass_ratio * (w / omega) * r.froude_krylov_per_m(kSurge);
+    r.exciting_force_per_m(kSurge) = r.froude_krylov_per_m(kSurge) + r.diffraction_per_m(kSurge);
+  }
 
   // Roll viscous damping (EQ-STRIP-8).
   const double c44 = restoring(kRoll, kRoll);

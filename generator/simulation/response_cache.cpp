@@ -27,6 +27,7 @@ class ResponseCache {
     add(o.min_encounter_frequency_nondim);
     key += o.transom_terms ? "|t" : "|n";
     key += o.added_resistance_aft_of_beam ? "|a" : "|z";
+    key += o.surge_diffraction ? "|d" : "|f";
     std::promise<std::shared_ptr<const Responses>> promise;
     std::shared_future<std::shared_ptr<const Responses>> future;
     bool compute = false;

@@ -144,6 +144,7 @@ simulation::CaseOptions case_options(const RunOptions& options) {
   o.non_surge_stiffness = options.non_surge_stiffness;
   o.nonnegative_wave_damping = options.nonnegative_wave_damping;
   o.record.encounter_cutoff_rad_s = options.encounter_cutoff_rad_s;
+  o.response.surge_diffraction = options.surge_diffraction;
   if (options.thesis_towline_fit) {
     o.towline.hold_static_stiffness = false;
     o.towline.max_run_weight_exponent = 0.0;

@@ -50,6 +50,46 @@ TEST(SeakeepingStrip, LongWavesHeaveFollowsTheWaveAndPitchTheSlope) {
   EXPECT_ABS_CLOSE(std::arg(f[0].rao(kPitch)), kPi / 2.0, kPhaseAbsTolRad);
 }
 
+// EVIDENCE-OF: EQ-STRIP-7
+TEST(SeakeepingStrip, SurgeDiffractionMakesTheLongWaveSurgeFollowTheWater) {
+  // lambda = 20 L at zero speed in head seas: the water's horizontal orbit
+  // has amplitude e^{kz} (per unit wave amplitude). Froude-Krylov alone gives
+  // rho V du/dt against (m + A11), so the free hull surges m / (m + A11) =
+  // 1 / 1.05 of it; with the diffraction force A11 du/dt (Newman 1977, sec.
+  // 4.15: F = (rho V + A11) du/dt) it follows the water. The ratio of the two
+  // is 1 + A11 / m up to the surge-pitch mass coupling (measured 1e-4); the
+  // orbit itself is met to O(kT / 2 + (kL)^2 / 24) = 1.3 % on this hull.
+  constexpr double kCouplingRelTol = 1e-3;
+  constexpr double kLongWaveRelTol = 0.02;
+  const double l = wigley().hull.length_pp_m;
+  const double ratio = wigley().hull.surge_added_mass_ratio;
+  ASSERT_GT(ratio, 0.0);
+  const std::vector<double> omega{omega_for_wavelength(20.0 * l)};
+  const auto fk_only = compute_response(wigley(), 0.0, kPi, omega);
+  ResponseOptions with;
+  with.surge_diffraction = true;
+  const auto both = compute_response(wigley(), 0.0, kPi, omega, with);
+  EXPECT_REL_CLOSE(std::abs(both[0].rao(kSurge)) / std::abs(fk_only[0].rao(kSurge)), 1.0 + ratio, kCouplingRelTol);
+  EXPECT_REL_CLOSE(std::abs(both[0].rao(kSurge)), 1.0, kLongWaveRelTol);
+  EXPECT_REL_CLOSE(std::abs(fk_only[0].rao(kSurge)), 1.0 / (1.0 + ratio), kLongWaveRelTol);
+  // The option touches the surge force only.
+  EXPECT_EQ(both[0].exciting_force_per_m(kHeave), fk_only[0].exciting_force_per_m(kHeave));
+
+  // With speed the added-mass part is driven at the encounter frequency:
+  // F1_D = ratio (w_h / w) F1_FK, exactly (larger in head seas, smaller in
+  // following seas, opposite in sign where the waves overtake).
+  constexpr double kAlgebraRelTol = 1e-12;
+  const double u = 0.3 * std::sqrt(kGravity_m_s2 * l);
+  for (double mu : {0.0, kPi}) {
+    const auto r = compute_response(wigley(), u, mu, {omega_for_wavelength(1.5 * l)}, with);
+    const VesselResponse& v = r[0];
+    const Complex expected = ratio * (v.omega_hydro_rad_s / v.omega_rad_s) * v.froude_krylov_per_m(kSurge);
+    EXPECT_REL_CLOSE(std::abs(v.diffraction_per_m(kSurge)), std::abs(expected), kAlgebraRelTol) << mu;
+    EXPECT_REL_CLOSE(std::abs(v.exciting_force_per_m(kSurge)),
+                     std::abs(v.froude_krylov_per_m(kSurge) + expected), kAlgebraRelTol) << mu;
+  }
+}
+
 // EVIDENCE-OF: EQ-STRIP-3
 TEST(SeakeepingStrip, ZeroSpeedCoefficientsAreSymmetric) {
   // At U = 0, K_ij = -w^2 int c_i Z_ij c_j dx is symmetric whenever the
