@@ -137,6 +137,7 @@ struct StripFrame {
   double u;         // speed [m/s]
   bool transom;     // transom terms at the aft station
   double x_aft;     // x of the aft station [m]
+  double surge_diffraction_ratio;  // A11 / (rho V) with ResponseOptions::surge_diffraction, else 0
 };
 
 // Radiation: K_ij = int (i w c_i + U c_i') Z (i w c_j - U c_j') dx
@@ -205,6 +206,11 @@ void add_exciting_forces(const StripFrame& f, VesselResponse& r) {
     volume += f.wx[s] * f.strips[s].loads.weighted_area_m2 * std::exp(Complex(0.0, -k * f.st[s].x_m * cos_mu));
   }
   r.froude_krylov_per_m(kSurge) = kI * k * cos_mu * rho_g * volume;
+  // Its diffraction part (EQ-STRIP-7, optional): the added mass driven at the
+  // rate the hull meets the water, i w_h u, against Froude-Krylov's i w u.
+  if (f.surge_diffraction_ratio > 0.0) {
+    r.diffraction_per_m(kSurge) = f.surge_diffraction_ratio * (w / f.omega) * r.froude_krylov_per_m(kSurge);
+  }
   // The z n_1 part of n_5 (Gauss: -int p z n_1 dS = i k cos mu int z p dV):
   // it makes the long-wave pitch equal the wave slope (EQ-STRIP-7).
   Complex moment(0.0, 0.0);
@@ -282,17 +288,14 @@ VesselResponse respond(const model::Vessel& vessel, double speed, double heading
   const StripFrame frame{st,     wx,  strips,
                          omega,  w,   k,
                          cos_mu, speed, options.transom_terms && has_section(st[0]),
-                         st[0].x_m};
+                         st[0].x_m,
+                         // A11 / (rho V): the displacement mass is rho V.
+                         options.surge_diffraction ? hull.surge_added_mass_ratio : 0.0};
 
   add_radiation(frame, r);
   // Surge (EQ-STRIP-7).
   r.added_mass(kSurge, kSurge) = hull.surge_added_mass_ratio * hull.displacement_kg;
   add_exciting_forces(frame, r);
-  if (options.surge_diffraction) {  // EQ-STRIP-7, diffraction
-    // A11 / (rho V): the displacement mass is rho V.
-    r.diffraction_per_m(kSurge) = hull.surge_added_mass_ratio * (w / omega) * r.froude_krylov_per_m(kSurge);
-    r.exciting_force_per_m(kSurge) = r.froude_krylov_per_m(kSurge) + r.diffraction_per_m(kSurge);
-  }
 
   // Roll viscous damping (EQ-STRIP-8).
   const double c44 = restoring(kRoll, kRoll);
