@@ -8,10 +8,13 @@
 // polynomial's coefficients are converted one by one: tau [lbf] =
 // sum a_mn xi[ft]^m xi_dot[ft/s]^n, so a_mn [lbf/(ft^m (ft/s)^n)] =
 // a_mn,SI [N/(m^m (m/s)^n)] * (m per ft)^(m+n) / (N per lbf).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -63,6 +66,7 @@ struct TowlineReport {
   const towline::FitSummary& s;
   double resolution_tolerance;  // TowlineFitOptions::resolution_tolerance
   double runtime_s;
+  std::vector<towline::RunDamping> damping;  // EQ-TOWLINE-19, per run
 };
 
 // The tug and tow (checked for their roles) and the towline, whose breaking
@@ -156,8 +160,41 @@ void print_towline_json(const TowlineArgs& a, const TowlineReport& r) {
                      {"probes_left_out", s.resolution_probes_left_out}};
   j["runs"] = s.runs;
   j["runs_not_periodic"] = s.runs_not_periodic;
+  ordered_json damping = ordered_json::array();
+  for (const towline::RunDamping& d : r.damping) {
+    damping.push_back({{"omega_rad_s", d.omega_rad_s},
+                       {"amplitude_ft", units::m_to_ft(d.amplitude_m)},
+                       {"cable_lbf_s_per_ft", units::n_s_per_m_to_lbf_s_per_ft(d.cable_n_s_m)},
+                       {"polynomial_lbf_s_per_ft", units::n_s_per_m_to_lbf_s_per_ft(d.polynomial_n_s_m)},
+                       {"slack_fraction", d.slack_fraction}});
+  }
+  j["damping_per_run"] = damping;
   j["runtime_s"] = r.runtime_s;
   std::cout << j.dump(2) << "\n";
+}
+
+// EQ-TOWLINE-19 per excitation frequency: the range of the cable's and the
+// polynomial's damping over the frequency's amplitudes.
+void print_damping_text(const std::vector<towline::RunDamping>& damping) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::cout << "\ndamping of the runs' motion (EQ-TOWLINE-19: energy dissipated per cycle / (pi w A^2), lbf s/ft)\n";
+  TextTable t({"w rad/s", "amplitudes ft", "cable", "polynomial", "cable / polynomial"});
+  for (std::size_t i = 0; i < damping.size();) {
+    std::size_t j = i;
+    double c_lo = kInf, c_hi = -kInf, p_lo = kInf, p_hi = -kInf, r_lo = kInf, r_hi = -kInf;
+    for (; j < damping.size() && damping[j].omega_rad_s == damping[i].omega_rad_s; ++j) {
+      const double c = units::n_s_per_m_to_lbf_s_per_ft(damping[j].cable_n_s_m);
+      const double p = units::n_s_per_m_to_lbf_s_per_ft(damping[j].polynomial_n_s_m);
+      c_lo = std::min(c_lo, c), c_hi = std::max(c_hi, c), p_lo = std::min(p_lo, p), p_hi = std::max(p_hi, p);
+      if (p > 0.0) r_lo = std::min(r_lo, c / p), r_hi = std::max(r_hi, c / p);
+    }
+    t.add_row({fmt(damping[i].omega_rad_s, 2),
+               fmt(units::m_to_ft(damping[i].amplitude_m), 2) + " - " + fmt(units::m_to_ft(damping[j - 1].amplitude_m), 2),
+               fmt(c_lo, 0) + " - " + fmt(c_hi, 0), fmt(p_lo, 0) + " - " + fmt(p_hi, 0),
+               r_lo <= r_hi ? fmt(r_lo, 2) + " - " + fmt(r_hi, 2) : "-"});
+    i = j;
+  }
+  t.print(std::cout);
 }
 
 void print_towline_text(const TowlineArgs& a, const TowlineReport& r) {
@@ -215,6 +252,7 @@ void print_towline_text(const TowlineArgs& a, const TowlineReport& r) {
               << " probe runs that never became periodic left out of the resolution criterion";
   }
   std::cout << "; " << fmt(r.runtime_s, 2) << " s\n";
+  print_damping_text(r.damping);
 }
 
 int run_towline(const Context& ctx, const TowlineArgs& a) {
@@ -229,7 +267,8 @@ int run_towline(const Context& ctx, const TowlineArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   const std::shared_ptr<const towline::TowlineFit> fit = towline::build_towline_fit(line, points, mean_n, options);
   const double runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const TowlineReport report{tug, tow, line, points, fit->summary(), options.resolution_tolerance, runtime_s};
+  const TowlineReport report{tug,       tow,        line, points, fit->summary(), options.resolution_tolerance,
+                             runtime_s, towline::run_damping(*fit)};
   if (a.json) {
     print_towline_json(a, report);
   } else {

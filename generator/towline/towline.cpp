@@ -255,6 +255,23 @@ SmallMotionChoice fit_small_motion(const std::vector<TensionSample>& samples, co
 
 }  // namespace
 
+std::vector<RunDamping> run_damping(const TowlineFit& fit) {
+  std::vector<RunDamping> out;
+  for (const HarmonicRun& run : fit.runs()) {
+    const std::size_t n = run.samples.size();
+    if (run.amplitude_m <= 0.0 || n == 0) continue;
+    const double dt_s = 2.0 * std::numbers::pi / run.omega_rad_s / static_cast<double>(n);
+    double cable_j = 0.0, polynomial_j = 0.0;  // energy dissipated over the cycle
+    for (const TensionSample& p : run.samples) {
+      cable_j += p.tau_n * p.xi_dot_m_s * dt_s;
+      polynomial_j += fit.dynamic_tension_n(p.xi_m, p.xi_dot_m_s, AboveBreakingModel::kPolynomial) * p.xi_dot_m_s * dt_s;
+    }
+    const double norm = std::numbers::pi * run.omega_rad_s * run.amplitude_m * run.amplitude_m;
+    out.push_back({run.omega_rad_s, run.amplitude_m, cable_j / norm, polynomial_j / norm, run.slack_fraction});
+  }
+  return out;
+}
+
 double small_motion_ratio(const PolynomialCoefficients& c, double static_stiffness_n_m) {
   return first_harmonic_n(c, kSmallMotionAmplitudeM, 2.0 * std::numbers::pi / kSmallMotionPeriodS) /
          (static_stiffness_n_m * kSmallMotionAmplitudeM);

@@ -118,6 +118,16 @@
 //                 docs/validation.md, "Towline small motion".
 //   EQ-TOWLINE-17 first harmonic of P(A sin wt, A w cos wt): see
 //                 first_harmonic_n in polynomial.hpp.
+//   EQ-TOWLINE-19 the damping a periodic run's motion meets, from the energy
+//                 dissipated per cycle: c_eq = (integral of tau xi_dot dt over
+//                 one cycle) / (pi w A^2), the linear damping that dissipates
+//                 as much (run_damping). On a harmonic extension the polynomial
+//                 gives c_eq = a01 + a21 A^2 / 4 + 3 a03 (A w)^2 / 4 (the other
+//                 terms dissipate nothing over a cycle); the cable's normal drag
+//                 gives c_eq proportional to A w at low frequency (Morison:
+//                 energy per cycle ~ A^3 w^2). A diagnostic: the fit of
+//                 EQ-TOWLINE-12 matches tension samples, in which the damping
+//                 is a small quadrature part, and does not match this.
 //   The simulation's slack limit is applied by dynamic_tension_n:
 //   tau >= -min T (EQ-TOWLINE-8; -H when the line has a horizontal tangent).
 //   Beyond the thesis (default, selectable): samples taken while the run was
@@ -304,6 +314,21 @@ class TowlineFit {
   FitSummary summary_;
   std::vector<HarmonicRun> runs_;
 };
+
+// EQ-TOWLINE-19 for one excitation run of a fit.
+struct RunDamping {
+  double omega_rad_s = 0.0;
+  double amplitude_m = 0.0;
+  double cable_n_s_m = 0.0;       // the shallow-sag cable's, from the run's samples
+  double polynomial_n_s_m = 0.0;  // the simulation's law (dynamic_tension_n) on the same motion
+  double slack_fraction = 0.0;    // of the run's recorded samples
+};
+
+// EQ-TOWLINE-19 for every run of `fit` with a non-zero amplitude, in the
+// order of fit.runs(). The samples cover one cycle at uniform phases, so the
+// cycle integral is the rectangle rule (exact for the polynomial's
+// trigonometric integrand, whose degree 4 is below the 32 samples).
+std::vector<RunDamping> run_damping(const TowlineFit& fit);
 
 // Builds the catenary, chooses the resolution (probe runs at N and 2N
 // elements, doubling until resolution_tolerance; then dt and dt/2 likewise),

@@ -279,5 +279,51 @@ TEST(TowlineFit, GaussianEquivalentLineIsTheLeastSquaresLine) {
   EXPECT_DOUBLE_EQ(small.damping_n_s_m, p.a01());
 }
 
+// EVIDENCE-OF: EQ-TOWLINE-19
+// The damping of a run from the energy dissipated per cycle. The polynomial
+// on a harmonic extension dissipates a01 + a21 A^2 / 4 + 3 a03 (A w)^2 / 4
+// (rectangle rule on 32 uniform phases: exact for the degree-4 integrand).
+// The cable is passive (it dissipates at every run), and at low frequency its
+// damping is the normal drag's: a quadratic damper F = C |v| v dissipates as
+// a linear one of c_eq = 8 C A w / (3 pi) (Morison), so c_eq grows in
+// proportion to the amplitude.
+TEST(TowlineFit, RunDampingIsTheEnergyDissipatedPerCycle) {
+  // Quadratic drag holds to a few percent below about 0.1 m/s here (the
+  // chord's tangential motion and the line's inertia add a little).
+  constexpr double kDragScalingRelTol = 0.05;
+  constexpr double kClosedFormRelTol = 1e-9;  // roundoff over 32 samples
+  const model::Towline line = test::thesis_towline("wire", 2000.0);
+  TowlineFitOptions o;
+  o.excitation.frequencies_rad_s = {0.05, 0.15, 0.5};  // a small set keeps the test fast
+  o.excitation.amplitude_fractions = {0.02, 0.05, 0.1, 0.5};
+  const auto fit = build_towline_fit(line, test::thesis_tow_points(), units::lbf_to_n(79000.0), o);
+  const PolynomialCoefficients& c = fit->coefficients();
+  const std::vector<RunDamping> d = run_damping(*fit);
+  ASSERT_EQ(d.size(), fit->runs().size());
+  int closed_form_checked = 0;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    const HarmonicRun& run = fit->runs()[i];
+    EXPECT_GT(d[i].cable_n_s_m, 0.0) << "run " << i;
+    bool limited = false;
+    for (const TensionSample& x : run.samples) limited |= fit->polynomial_n(x.xi_m, x.xi_dot_m_s) < fit->summary().slack_limit_n;
+    if (limited) continue;
+    const double a = d[i].amplitude_m, w = d[i].omega_rad_s;
+    EXPECT_REL_CLOSE(d[i].polynomial_n_s_m, c.a01() + c.a21() * a * a / 4.0 + 0.75 * c.a03() * a * a * w * w,
+                     kClosedFormRelTol)
+        << "run " << i;
+    ++closed_form_checked;
+  }
+  EXPECT_GT(closed_form_checked, 8);
+  // Low frequency, velocity amplitude 0.02-0.09 m/s: c_eq / (A w) is one number.
+  for (double w : {0.05, 0.15}) {
+    std::vector<double> per_velocity;
+    for (const RunDamping& r : d) {
+      if (r.omega_rad_s == w && r.amplitude_m * w < 0.1) per_velocity.push_back(r.cable_n_s_m / (r.amplitude_m * w));
+    }
+    ASSERT_GE(per_velocity.size(), 2u) << w;
+    for (double x : per_velocity) EXPECT_REL_CLOSE(x, per_velocity.front(), kDragScalingRelTol) << "w " << w;
+  }
+}
+
 }  // namespace
 }  // namespace towdb::towline

@@ -78,6 +78,22 @@ TEST(CliPhysics, TowlineJsonCoefficientsGeometryAndEquilibrium) {  // cli-physic
   EXPECT_REL_CLOSE(tau_lbf, units::n_to_lbf(tau_n), kRoundTripRelTol);
   EXPECT_EQ(j.at("coefficient_units").at("a12").get<std::string>(), "lbf s^2/ft^3");
 
+  // EVIDENCE-OF: EQ-TOWLINE-19
+  // One damping entry per run, in lbf s/ft: on the smallest, slowest run (never
+  // slack) the polynomial's is a01 + a21 A^2 / 4 + 3 a03 (A w)^2 / 4 in the
+  // printed units; a passive cable dissipates at every run.
+  const auto& damping = j.at("damping_per_run");
+  ASSERT_EQ(damping.size(), j.at("runs").get<std::size_t>());
+  for (const auto& d : damping) EXPECT_GT(d.at("cable_lbf_s_per_ft").get<double>(), 0.0);
+  const auto& first = damping.front();
+  ASSERT_EQ(first.at("slack_fraction").get<double>(), 0.0);
+  const double a_ft = first.at("amplitude_ft").get<double>(), w = first.at("omega_rad_s").get<double>();
+  const auto& c = j.at("coefficients");
+  EXPECT_REL_CLOSE(first.at("polynomial_lbf_s_per_ft").get<double>(),
+                   c.at("a01").get<double>() + c.at("a21").get<double>() * a_ft * a_ft / 4.0 +
+                       0.75 * c.at("a03").get<double>() * a_ft * a_ft * w * w,
+                   1e-9);
+
   // Vertical equilibrium of the whole line (EQ-TOWLINE-1): the end tensions'
   // vertical components carry the submerged weight,
   // H (tan alpha_tug + tan alpha_tow) = sum w_i L_i.
