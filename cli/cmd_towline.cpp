@@ -185,8 +185,14 @@ void print_damping_text(const std::vector<towline::RunDamping>& damping) {
     for (; j < damping.size() && damping[j].omega_rad_s == damping[i].omega_rad_s; ++j) {
       const double c = units::n_s_per_m_to_lbf_s_per_ft(damping[j].cable_n_s_m);
       const double p = units::n_s_per_m_to_lbf_s_per_ft(damping[j].polynomial_n_s_m);
-      c_lo = std::min(c_lo, c), c_hi = std::max(c_hi, c), p_lo = std::min(p_lo, p), p_hi = std::max(p_hi, p);
-      if (p > 0.0) r_lo = std::min(r_lo, c / p), r_hi = std::max(r_hi, c / p);
+      c_lo = std::min(c_lo, c);
+      c_hi = std::max(c_hi, c);
+      p_lo = std::min(p_lo, p);
+      p_hi = std::max(p_hi, p);
+      if (p > 0.0) {
+        r_lo = std::min(r_lo, c / p);
+        r_hi = std::max(r_hi, c / p);
+      }
     }
     t.add_row({fmt(damping[i].omega_rad_s, 2),
                fmt(units::m_to_ft(damping[i].amplitude_m), 2) + " - " + fmt(units::m_to_ft(damping[j - 1].amplitude_m), 2),

@@ -326,8 +326,9 @@ struct RunDamping {
 
 // EQ-TOWLINE-19 for every run of `fit` with a non-zero amplitude, in the
 // order of fit.runs(). The samples cover one cycle at uniform phases, so the
-// cycle integral is the rectangle rule (exact for the polynomial's
-// trigonometric integrand, whose degree 4 is below the 32 samples).
+// cycle integral is the rectangle rule: exact for the unlimited polynomial's
+// trigonometric integrand, of degree 4, with more than 4 samples a period
+// (DynamicsOptions::samples_per_period, 32 by default).
 std::vector<RunDamping> run_damping(const TowlineFit& fit);
 
 // Builds the catenary, chooses the resolution (probe runs at N and 2N
