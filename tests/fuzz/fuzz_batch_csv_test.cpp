@@ -123,7 +123,9 @@ std::filesystem::path* FuzzBatchCsv::dir_ = nullptr;
 
 TEST_F(FuzzBatchCsv, CorpusKeepsTheProperties) {  // fuzz-batch-1
   ASSERT_FALSE(test::towdb_exe().empty()) << "TOWDB_EXE is not set";
-  for (const Input& in : load_dir("corpus/batch")) {
+  const auto corpus = load_dir("corpus/batch");
+  ASSERT_FALSE(corpus.empty()) << "no inputs under tests/fuzz/corpus/batch";
+  for (const Input& in : corpus) {
     for (bool json : {false, true}) {
       Tally tally;
       EXPECT_EQ(check_input(db(), in.text, json, tally), "") << in.name;
@@ -136,7 +138,9 @@ TEST_F(FuzzBatchCsv, CorpusKeepsTheProperties) {  // fuzz-batch-1
 
 TEST_F(FuzzBatchCsv, RegressionInputsKeepTheProperties) {  // fuzz-batch-2
   ASSERT_FALSE(test::towdb_exe().empty()) << "TOWDB_EXE is not set";
-  for (const Input& in : load_dir("regressions/batch")) {
+  const auto kept = load_dir("regressions/batch");
+  ASSERT_FALSE(kept.empty()) << "no inputs under tests/fuzz/regressions/batch";
+  for (const Input& in : kept) {
     for (bool json : {false, true}) {
       Tally tally;
       EXPECT_EQ(check_input(db(), in.text, json, tally), "") << in.name << (json ? " (json)" : "");

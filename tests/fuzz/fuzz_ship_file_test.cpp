@@ -160,6 +160,7 @@ const auto kParseTowline = [](const std::string& text, const std::string& path) 
 
 template <typename Parse>
 void check_files(const std::vector<Input>& files, Parse parse, bool must_parse) {
+  ASSERT_FALSE(files.empty()) << "no inputs to check (a corpus or regressions folder is missing)";
   const Mutator mutator(load_dir("corpus/vessels"), Mutator(load_dir("corpus/towlines")).words());
   const auto fields = field_names(mutator.words());
   for (const Input& in : files) {
