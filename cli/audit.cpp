@@ -8,6 +8,7 @@
 #include "common/parallel_for.hpp"
 #include "common/random.hpp"
 #include "common/units.hpp"
+#include "query_database.hpp"
 #include "store/database.hpp"
 #include "sweep/build/simulation_runner.hpp"
 #include "towdb/query.hpp"
@@ -131,7 +132,8 @@ query::QueryRequest request_of(const AuditQuestion& q, bool extrapolate) {
 // The database's answers (serial: a query handle is single-threaded and a
 // query takes microseconds). Errors other than the caller's are the audit's.
 void answer_from_database(const std::filesystem::path& db_path, std::vector<AuditOutcome>* outcomes) {
-  query::Database db(db_path.string());
+  const std::unique_ptr<query::Database> opened = open_query_database("--db", db_path.string());
+  query::Database& db = *opened;
   for (AuditOutcome& o : *outcomes) {
     o.extrapolated_999_kips = kNaN;
     if (!(o.q.mean_tension_lbf > 0.0)) {

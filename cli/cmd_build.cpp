@@ -182,9 +182,8 @@ int run_build_command(const Context& ctx, const BuildArgs& a) {
   if (a.db.empty()) throw InputError("build: --db FILE is required (except with --dry-run)");
   const sweep::CaseRunner* runner = sweep::default_case_runner();
   if (!runner) {
-    throw InputError(
-        "build: no case runner is registered in this towdb (the simulation chain is not yet wired into `towdb "
-        "build`: sweep::set_default_case_runner); nothing was written. Use --dry-run to list the cases.");
+    // main() registers the simulation chain before parsing: a towdb without it is built wrong.
+    throw Error("build: no case runner is registered (sweep::set_default_case_runner); nothing was written");
   }
   sweep::distributed::Session session;
   sweep::BuildOptions o;
@@ -345,7 +344,7 @@ int run_calibration(const Context& ctx, const std::string& csv, const std::strin
   if (!out.empty()) check_output_file("--out", out);
   if (std::filesystem::is_directory(csv)) throw InputError("--csv " + csv + ": is a directory, expected a CSV file");
   std::ifstream in(csv, std::ios::binary);
-  if (!in) throw InputError(csv + ": cannot open the CSV file (missing or unreadable)");
+  if (!in) throw InputError("--csv = " + csv + ": cannot open the CSV file (missing or unreadable)");
   std::ostringstream text;
   text << in.rdbuf();
   const io::ShipCatalog catalog = load_catalog(ctx);
@@ -358,7 +357,7 @@ int run_calibration(const Context& ctx, const std::string& csv, const std::strin
     std::cout << toml;
   } else {
     std::ofstream os(out, std::ios::binary);
-    if (!os) throw InputError(out + ": cannot write the sweep file");
+    if (!os) throw InputError("--out = " + out + ": cannot write the sweep file");
     os << toml;
     std::cerr << "wrote " << rows.size() << " cases to " << out << "\n";
   }

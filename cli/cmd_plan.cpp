@@ -30,6 +30,7 @@
 #include "output.hpp"
 #include "plan_curves.hpp"
 #include "plot.hpp"
+#include "query_database.hpp"
 
 namespace towdb::cli {
 
@@ -179,7 +180,7 @@ void write_plan_pngs(const Plan& plan, const std::filesystem::path& out_dir) {
 int run_plan(const PlanArgs& a) {
   if (a.out_dir.empty() && !a.json) throw InputError("--out-dir: required (or --json for the curves' numbers)");
   if (!a.out_dir.empty()) check_output_dir("--out-dir", a.out_dir);
-  const std::unique_ptr<query::Database> db = open_plan_database(a.db);
+  const std::unique_ptr<query::Database> db = open_query_database("--db", a.db);
   const Plan plan = make_plan(*db, a.q);
   if (!a.out_dir.empty()) write_plan_pngs(plan, a.out_dir);
   if (a.json) {

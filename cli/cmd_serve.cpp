@@ -17,10 +17,14 @@
 // request 64 KiB (413), the URI 8 KiB (cpp-httplib), R requests per second per
 // client address with bursts of 2R (429). Binds 127.0.0.1 unless told;
 // the database is opened read-only; one handle, used under a mutex.
+#include <netdb.h>
 #include <signal.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -40,6 +44,7 @@
 #include "common/error.hpp"
 #include "output.hpp"
 #include "plan_curves.hpp"
+#include "query_database.hpp"
 #include "query_json.hpp"
 #include "serve_page.hpp"
 #include "store/database.hpp"
@@ -364,8 +369,35 @@ std::thread stop_on_signal(httplib::Server& svr, sigset_t signals) {
   });
 }
 
+// --bind must name an address of this machine: a name the resolver does not
+// know, or an address no interface has, is bad input (exit 2), found by
+// binding a socket to it on an ephemeral port. A failure to listen later (the
+// port in use) is not the user's flag: exit 1.
+void check_bind_address(const std::string& address) {
+  addrinfo hints{};
+  hints.ai_family = AF_UNSPEC;
+  hints.ai_socktype = SOCK_STREAM;
+  hints.ai_flags = AI_PASSIVE;
+  addrinfo* found = nullptr;
+  const int rc = getaddrinfo(address.c_str(), "0", &hints, &found);
+  if (rc != 0 || !found) {
+    throw InputError("--bind = " + address + ": not an address (" + gai_strerror(rc) +
+                     "); give one of this machine's, e.g. 127.0.0.1, 0.0.0.0 or ::1");
+  }
+  const int fd = socket(found->ai_family, found->ai_socktype, found->ai_protocol);
+  const bool bound = fd >= 0 && bind(fd, found->ai_addr, found->ai_addrlen) == 0;
+  const int bind_errno = errno;
+  if (fd >= 0) close(fd);
+  freeaddrinfo(found);
+  if (!bound && bind_errno == EADDRNOTAVAIL) {
+    throw InputError("--bind = " + address + ": no interface of this machine has this address; give one of its "
+                     "own, e.g. 127.0.0.1, 0.0.0.0 or ::1");
+  }
+}
+
 int run_serve(const ServeArgs& a) {
-  std::unique_ptr<query::Database> db = open_plan_database(a.db);
+  check_bind_address(a.bind);
+  std::unique_ptr<query::Database> db = open_query_database("--db", a.db);
   const int cases = db->case_count();
   Server server(a, std::move(db));
   httplib::Server svr;
@@ -377,7 +409,7 @@ int run_serve(const ServeArgs& a) {
     port = -1;
   }
   if (port < 0) {
-    throw Error("cannot listen on " + a.bind + ":" + std::to_string(a.port) + " (in use, or not an address here)");
+    throw Error("cannot listen on " + a.bind + ":" + std::to_string(a.port) + " (the port is in use?)");
   }
   sigset_t signals;
   sigemptyset(&signals);

@@ -60,7 +60,10 @@ sea::SeaState sea_state(const SimulateArgs& a) {
     throw InputError("--swell-tp-s / --swell-heading-deg: need --swell-hs-ft (the swell's height)");
   }
   if (two_parameter) {
-    if (!(a.hs_ft > 0.0 && a.tp_s > 0.0)) throw InputError("--hs-ft and --tp-s must be given together");
+    if (!(a.hs_ft > 0.0 && a.tp_s > 0.0)) {
+      throw InputError(std::string(a.hs_ft > 0.0 ? "--tp-s is missing" : "--hs-ft is missing") +
+                       ": --hs-ft and --tp-s must be given together (a two-parameter sea)");
+    }
     if (a.spectrum == "jonswap") {
       wind_sea = sea::Spectrum::jonswap(units::ft_to_m(a.hs_ft), a.tp_s, a.gamma);
     } else {
@@ -100,131 +103,111 @@ class DaysProgress {
 
 double kips(double n) { return units::n_to_kips(n); }
 
-int run_simulate(const Context& ctx, const SimulateArgs& a) {
-  if (!a.plot.empty()) check_output_file("--plot", a.plot);
-  const io::ShipCatalog cat = load_catalog(ctx);
-  const model::Vessel& tug = cat.vessel(a.tug).vessel;
-  const model::Vessel& tow = cat.vessel(a.tow).vessel;
-  if (tug.role != model::VesselRole::kTug) throw InputError("--tug " + a.tug + ": '" + tug.name + "' is not a tug");
-  if (tow.role != model::VesselRole::kTow) throw InputError("--tow " + a.tow + ": '" + tow.name + "' is not a tow");
-  simulation::CaseInputs in;
-  in.tug = &tug;
-  in.tow = &tow;
-  const model::LineKind kind = a.line == "wire" ? model::LineKind::kWire : model::LineKind::kFiber;
-  in.towline = cat.towline(tug, kind, units::ft_to_m(a.length_ft));
-  in.speed_m_s = units::kt_to_m_s(a.speed_kt);
-  in.sea = sea_state(a);
-  in.mean_tension_n = units::lbf_to_n(a.mean_tension_lbf);
-  in.days = a.days;
-  in.seed = a.seed;
-  simulation::CaseOptions o;
-  o.num_threads = a.threads;
-  o.above_breaking = a.above_breaking == "spring" ? towline::AboveBreakingModel::kStraightSpring
-                                                  : towline::AboveBreakingModel::kPolynomial;
-  o.tow_propeller.state = a.tow_propeller == "locked" ? propulsion::TowPropellerState::kLocked
-                          : a.tow_propeller == "free" ? propulsion::TowPropellerState::kFreeSpinning
-                                                      : propulsion::TowPropellerState::kRemoved;
-  DaysProgress bar(true);
-  o.progress = [&bar](int done, int total) { bar.update(done, total); };
-  const simulation::CaseResult r = simulation::run_case(in, o);
+// --plot: the daily maxima with the Type I fit, and the worst day's tension.
+void write_plot(const SimulateArgs& a, const simulation::CaseInputs& in, const simulation::CaseOptions& o,
+                const simulation::CaseResult& r) {
+  const auto& st = r.statistics;
+  const auto model = simulation::prepare_case(in, o);
+  // The day with the largest maximum, for the time-series slice.
+  std::size_t worst = 0;
+  for (std::size_t i = 1; i < r.days.size(); ++i) {
+    if (r.days[i].max_dynamic_tension_n > r.days[worst].max_dynamic_tension_n) worst = i;
+  }
+  const simulation::DayForcing f = simulation::day_forcing(*model, a.seed, worst);
+  std::vector<double> trace;
+  simulation::simulate_day(*model, f, o.integrator, &trace);
+  std::vector<double> maxima_kips;
+  for (const auto& d : r.days) maxima_kips.push_back(kips(d.max_dynamic_tension_n));
+  for (double& t : trace) t = kips(t);
+  write_simulation_plot(a.plot, maxima_kips, kips(st.gumbel_u_n), st.gumbel_alpha_per_n * units::kips_to_n(1.0),
+                        trace, f.dt_s, static_cast<int>(worst));
+}
+
+// --json: every input, statistic and diagnostic, units in the keys.
+void print_json(const SimulateArgs& a, const simulation::CaseInputs& in, const simulation::CaseResult& r) {
   const auto& st = r.statistics;
   const double extreme_lbf = a.mean_tension_lbf + units::n_to_lbf(st.dynamic_999_n);
+  ordered_json j;
+  j["tug"] = in.tug->name;
+  j["tow"] = in.tow->name;
+  j["speed_kt"] = a.speed_kt;
+  j["heading_deg"] = a.heading_deg;
+  j["line"] = a.line;
+  j["length_ft"] = a.length_ft;
+  j["mean_tension_lbf"] = a.mean_tension_lbf;
+  j["significant_wave_height_ft"] = units::m_to_ft(in.sea.significant_height_m());
+  j["dynamic_tension_kips"] = kips(st.dynamic_999_n);
+  j["extreme_tension_lbf"] = extreme_lbf;
+  j["dynamic_tension_99_kips"] = kips(st.dynamic_99_n);
+  j["gumbel_u_kips"] = kips(st.gumbel_u_n);
+  j["gumbel_alpha_per_kip"] = st.gumbel_alpha_per_n * units::kips_to_n(1.0);
+  j["daily_max_mean_kips"] = kips(st.daily_max_mean_n);
+  j["daily_max_variance_kips2"] = kips(kips(st.daily_max_variance_n2));
+  j["ci_level"] = st.ci_level;
+  j["ci_low_kips"] = kips(st.ci_low_n);
+  j["ci_high_kips"] = kips(st.ci_high_n);
+  j["gumbel_ml_u_kips"] = kips(st.gumbel_ml_u_n);
+  j["gumbel_ml_alpha_per_kip"] = st.gumbel_ml_alpha_per_n * units::kips_to_n(1.0);
+  j["gev_mu_kips"] = kips(st.gev_mu_n);
+  j["gev_sigma_kips"] = kips(st.gev_sigma_n);
+  j["gev_xi"] = st.gev_xi;
+  j["anderson_darling"] = st.anderson_darling;
+  j["ppcc"] = st.ppcc;
+  if (std::isfinite(st.empirical_999_n)) j["empirical_999_kips"] = kips(st.empirical_999_n);
+  if (std::isfinite(st.empirical_99_n)) j["empirical_99_kips"] = kips(st.empirical_99_n);
+  j["max_daily_max_kips"] = kips(st.max_daily_max_n);
+  j["breaking_strength_lbf"] = units::n_to_lbf(r.towline.breaking_strength_n);
+  j["above_breaking_strength"] = r.above_breaking_strength;
+  j["days"] = a.days;
+  j["seed"] = a.seed;
+  j["slack_fraction"] = r.slack_fraction;
+  j["snatch_events_per_day"] = r.snatch_events_per_day;
+  j["towline"] = {{"span_ft", units::m_to_ft(r.towline.span_m)},
+                  {"sag_ft", units::m_to_ft(r.towline.sag_m)},
+                  {"end_angle_tug_deg", units::rad_to_deg(r.towline.tug_angle_rad)},
+                  {"end_angle_tow_deg", units::rad_to_deg(r.towline.tow_angle_rad)},
+                  {"static_stiffness_lbf_per_ft", units::n_per_m_to_lbf_per_ft(r.towline.static_stiffness_n_m)},
+                  {"a10_lbf_per_ft", units::n_per_m_to_lbf_per_ft(r.towline.coefficients.a10())},
+                  {"a01_lbf_s_per_ft", units::n_s_per_m_to_lbf_s_per_ft(r.towline.coefficients.a01())},
+                  {"fit_rms_lbf", units::n_to_lbf(r.towline.fit_rms_error_n)}};
+  // Where the days took the line, against the polynomial's fitted range
+  // (outside it the tension is a linear continuation: case_runner.hpp).
+  j["extension_ft"] = {{"mean", units::m_to_ft(r.extension.mean_m)},
+                       {"sd", units::m_to_ft(r.extension.sd_m)},
+                       {"min", units::m_to_ft(r.extension.min_m)},
+                       {"max", units::m_to_ft(r.extension.max_m)},
+                       {"fit_min", units::m_to_ft(r.towline.fit_xi_min_m)},
+                       {"fit_max", units::m_to_ft(r.towline.fit_xi_max_m)},
+                       {"days_outside_fit", r.extension.days_outside_fit}};
+  j["surge_damping_lbf_s_per_ft"] = {
+      {"tug_hull", units::n_s_per_m_to_lbf_s_per_ft(r.tug_hull_damping_n_s_m)},
+      {"tug_propeller", units::n_s_per_m_to_lbf_s_per_ft(r.tug_propeller_damping_n_s_m)},
+      {"tug_wave", units::n_s_per_m_to_lbf_s_per_ft(r.tug_wave_damping_n_s_m)},
+      {"tow_hull", units::n_s_per_m_to_lbf_s_per_ft(r.tow_hull_damping_n_s_m)},
+      {"tow_propeller", units::n_s_per_m_to_lbf_s_per_ft(r.tow_propeller_damping_n_s_m)},
+      {"tow_wave", units::n_s_per_m_to_lbf_s_per_ft(r.tow_wave_damping_n_s_m)}};
+  j["added_resistance_lbf"] = {{"tug", units::n_to_lbf(r.tug_added_resistance_n)},
+                               {"tow", units::n_to_lbf(r.tow_added_resistance_n)}};
+  j["record"] = {{"time_step_s", r.record_time_step_s},
+                 {"samples", r.record_samples},
+                 {"wave_components", r.wave_components},
+                 {"retained_variance_fraction", r.retained_variance_fraction},
+                 {"fft_plan", r.fft_plan_from_stored_wisdom ? "stored wisdom" : "estimate"}};
+  j["integrator_vectors"] = simulation::lane_isa_name(r.lane_isa);  // no effect on any number
+  j["runtime_s"] = r.timings.total_s;
+  j["timings_s"] = {{"towline", r.timings.towline_s},
+                    {"hydrodynamics", r.timings.hydrodynamics_s},
+                    {"synthesis_cpu", r.timings.synthesis_s},
+                    {"integration_cpu", r.timings.integration_s},
+                    {"statistics", r.timings.statistics_s}};
+  std::cout << j.dump(2) << "\n";
+}
 
-  if (!a.plot.empty()) {
-    const auto model = simulation::prepare_case(in, o);
-    // The day with the largest maximum, for the time-series slice.
-    std::size_t worst = 0;
-    for (std::size_t i = 1; i < r.days.size(); ++i) {
-      if (r.days[i].max_dynamic_tension_n > r.days[worst].max_dynamic_tension_n) worst = i;
-    }
-    const simulation::DayForcing f = simulation::day_forcing(*model, a.seed, worst);
-    std::vector<double> trace;
-    simulation::simulate_day(*model, f, o.integrator, &trace);
-    std::vector<double> maxima_kips;
-    for (const auto& d : r.days) maxima_kips.push_back(kips(d.max_dynamic_tension_n));
-    for (double& t : trace) t = kips(t);
-    write_simulation_plot(a.plot, maxima_kips, kips(st.gumbel_u_n), st.gumbel_alpha_per_n * units::kips_to_n(1.0),
-                          trace, f.dt_s, static_cast<int>(worst));
-  }
-
-  if (a.json) {
-    ordered_json j;
-    j["tug"] = tug.name;
-    j["tow"] = tow.name;
-    j["speed_kt"] = a.speed_kt;
-    j["heading_deg"] = a.heading_deg;
-    j["line"] = a.line;
-    j["length_ft"] = a.length_ft;
-    j["mean_tension_lbf"] = a.mean_tension_lbf;
-    j["significant_wave_height_ft"] = units::m_to_ft(in.sea.significant_height_m());
-    j["dynamic_tension_kips"] = kips(st.dynamic_999_n);
-    j["extreme_tension_lbf"] = extreme_lbf;
-    j["dynamic_tension_99_kips"] = kips(st.dynamic_99_n);
-    j["gumbel_u_kips"] = kips(st.gumbel_u_n);
-    j["gumbel_alpha_per_kip"] = st.gumbel_alpha_per_n * units::kips_to_n(1.0);
-    j["daily_max_mean_kips"] = kips(st.daily_max_mean_n);
-    j["daily_max_variance_kips2"] = kips(kips(st.daily_max_variance_n2));
-    j["ci_level"] = st.ci_level;
-    j["ci_low_kips"] = kips(st.ci_low_n);
-    j["ci_high_kips"] = kips(st.ci_high_n);
-    j["gumbel_ml_u_kips"] = kips(st.gumbel_ml_u_n);
-    j["gumbel_ml_alpha_per_kip"] = st.gumbel_ml_alpha_per_n * units::kips_to_n(1.0);
-    j["gev_mu_kips"] = kips(st.gev_mu_n);
-    j["gev_sigma_kips"] = kips(st.gev_sigma_n);
-    j["gev_xi"] = st.gev_xi;
-    j["anderson_darling"] = st.anderson_darling;
-    j["ppcc"] = st.ppcc;
-    if (std::isfinite(st.empirical_999_n)) j["empirical_999_kips"] = kips(st.empirical_999_n);
-    if (std::isfinite(st.empirical_99_n)) j["empirical_99_kips"] = kips(st.empirical_99_n);
-    j["max_daily_max_kips"] = kips(st.max_daily_max_n);
-    j["breaking_strength_lbf"] = units::n_to_lbf(r.towline.breaking_strength_n);
-    j["above_breaking_strength"] = r.above_breaking_strength;
-    j["days"] = a.days;
-    j["seed"] = a.seed;
-    j["slack_fraction"] = r.slack_fraction;
-    j["snatch_events_per_day"] = r.snatch_events_per_day;
-    j["towline"] = {{"span_ft", units::m_to_ft(r.towline.span_m)},
-                    {"sag_ft", units::m_to_ft(r.towline.sag_m)},
-                    {"end_angle_tug_deg", units::rad_to_deg(r.towline.tug_angle_rad)},
-                    {"end_angle_tow_deg", units::rad_to_deg(r.towline.tow_angle_rad)},
-                    {"static_stiffness_lbf_per_ft", units::n_per_m_to_lbf_per_ft(r.towline.static_stiffness_n_m)},
-                    {"a10_lbf_per_ft", units::n_per_m_to_lbf_per_ft(r.towline.coefficients.a10())},
-                    {"a01_lbf_s_per_ft", units::n_s_per_m_to_lbf_s_per_ft(r.towline.coefficients.a01())},
-                    {"fit_rms_lbf", units::n_to_lbf(r.towline.fit_rms_error_n)}};
-    // Where the days took the line, against the polynomial's fitted range
-    // (outside it the tension is a linear continuation: case_runner.hpp).
-    j["extension_ft"] = {{"mean", units::m_to_ft(r.extension.mean_m)},
-                         {"sd", units::m_to_ft(r.extension.sd_m)},
-                         {"min", units::m_to_ft(r.extension.min_m)},
-                         {"max", units::m_to_ft(r.extension.max_m)},
-                         {"fit_min", units::m_to_ft(r.towline.fit_xi_min_m)},
-                         {"fit_max", units::m_to_ft(r.towline.fit_xi_max_m)},
-                         {"days_outside_fit", r.extension.days_outside_fit}};
-    j["surge_damping_lbf_s_per_ft"] = {
-        {"tug_hull", units::n_s_per_m_to_lbf_s_per_ft(r.tug_hull_damping_n_s_m)},
-        {"tug_propeller", units::n_s_per_m_to_lbf_s_per_ft(r.tug_propeller_damping_n_s_m)},
-        {"tug_wave", units::n_s_per_m_to_lbf_s_per_ft(r.tug_wave_damping_n_s_m)},
-        {"tow_hull", units::n_s_per_m_to_lbf_s_per_ft(r.tow_hull_damping_n_s_m)},
-        {"tow_propeller", units::n_s_per_m_to_lbf_s_per_ft(r.tow_propeller_damping_n_s_m)},
-        {"tow_wave", units::n_s_per_m_to_lbf_s_per_ft(r.tow_wave_damping_n_s_m)}};
-    j["added_resistance_lbf"] = {{"tug", units::n_to_lbf(r.tug_added_resistance_n)},
-                                 {"tow", units::n_to_lbf(r.tow_added_resistance_n)}};
-    j["record"] = {{"time_step_s", r.record_time_step_s},
-                   {"samples", r.record_samples},
-                   {"wave_components", r.wave_components},
-                   {"retained_variance_fraction", r.retained_variance_fraction},
-                   {"fft_plan", r.fft_plan_from_stored_wisdom ? "stored wisdom" : "estimate"}};
-    j["integrator_vectors"] = simulation::lane_isa_name(r.lane_isa);  // no effect on any number
-    j["runtime_s"] = r.timings.total_s;
-    j["timings_s"] = {{"towline", r.timings.towline_s},
-                      {"hydrodynamics", r.timings.hydrodynamics_s},
-                      {"synthesis_cpu", r.timings.synthesis_s},
-                      {"integration_cpu", r.timings.integration_s},
-                      {"statistics", r.timings.statistics_s}};
-    std::cout << j.dump(2) << "\n";
-    return 0;
-  }
-  std::cout << tug.name << " towing " << tow.name << " at " << fmt(a.speed_kt, 1) << " kt, "
+// The planner's table, with warnings for a broken line or a left fit range.
+void print_table(const SimulateArgs& a, const simulation::CaseInputs& in, const simulation::CaseResult& r) {
+  const auto& st = r.statistics;
+  const double extreme_lbf = a.mean_tension_lbf + units::n_to_lbf(st.dynamic_999_n);
+  std::cout << in.tug->name << " towing " << in.tow->name << " at " << fmt(a.speed_kt, 1) << " kt, "
             << "Hs " << fmt(units::m_to_ft(in.sea.significant_height_m()), 1) << " ft, heading "
             << fmt(a.heading_deg, 0) << " deg, " << fmt(a.length_ft, 0) << " ft of " << a.line << " + pendant, mean "
             << fmt_grouped(a.mean_tension_lbf) << " lbf\n\n";
@@ -258,6 +241,41 @@ int run_simulate(const Context& ctx, const SimulateArgs& a) {
     std::cout << "\nnote: on " << r.extension.days_outside_fit << " of " << a.days
               << " days the line's extension left the range the towline polynomial was fitted over; the tension "
                  "there is a linear continuation of the fit, not cable dynamics\n";
+  }
+}
+
+int run_simulate(const Context& ctx, const SimulateArgs& a) {
+  if (!a.plot.empty()) check_output_file("--plot", a.plot);
+  const io::ShipCatalog cat = load_catalog(ctx);
+  const model::Vessel& tug = cat.vessel(a.tug).vessel;
+  const model::Vessel& tow = cat.vessel(a.tow).vessel;
+  if (tug.role != model::VesselRole::kTug) throw InputError("--tug " + a.tug + ": '" + tug.name + "' is not a tug");
+  if (tow.role != model::VesselRole::kTow) throw InputError("--tow " + a.tow + ": '" + tow.name + "' is not a tow");
+  simulation::CaseInputs in;
+  in.tug = &tug;
+  in.tow = &tow;
+  const model::LineKind kind = a.line == "wire" ? model::LineKind::kWire : model::LineKind::kFiber;
+  in.towline = cat.towline(tug, kind, units::ft_to_m(a.length_ft));
+  in.speed_m_s = units::kt_to_m_s(a.speed_kt);
+  in.sea = sea_state(a);
+  in.mean_tension_n = units::lbf_to_n(a.mean_tension_lbf);
+  in.days = a.days;
+  in.seed = a.seed;
+  simulation::CaseOptions o;
+  o.num_threads = a.threads;
+  o.above_breaking = a.above_breaking == "spring" ? towline::AboveBreakingModel::kStraightSpring
+                                                  : towline::AboveBreakingModel::kPolynomial;
+  o.tow_propeller.state = a.tow_propeller == "locked" ? propulsion::TowPropellerState::kLocked
+                          : a.tow_propeller == "free" ? propulsion::TowPropellerState::kFreeSpinning
+                                                      : propulsion::TowPropellerState::kRemoved;
+  DaysProgress bar(true);
+  o.progress = [&bar](int done, int total) { bar.update(done, total); };
+  const simulation::CaseResult r = simulation::run_case(in, o);
+  if (!a.plot.empty()) write_plot(a, in, o, r);
+  if (a.json) {
+    print_json(a, in, r);
+  } else {
+    print_table(a, in, r);
   }
   return 0;
 }

@@ -32,6 +32,7 @@
 #include "common/progress.hpp"
 #include "output.hpp"
 #include "plot.hpp"
+#include "query_database.hpp"
 #include "sweep/spec/calibration.hpp"
 #include "towdb/query.hpp"
 #include "validation/validation.hpp"
@@ -67,10 +68,11 @@ struct ValidateArgs {
   std::string database;  // --database: answers of this database instead of simulations
 };
 
-std::string read_text(const fs::path& path) {
-  if (fs::is_directory(path)) throw InputError("'" + path.string() + "': is a directory, expected a file");
+// `what` names the file for the message: a flag ("--cases") or its role.
+std::string read_text(const fs::path& path, const std::string& what) {
+  if (fs::is_directory(path)) throw InputError(what + " = " + path.string() + ": is a directory, expected a file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read '" + path.string() + "'");
+  if (!in) throw InputError(what + " = " + path.string() + ": cannot read the file (missing or unreadable)");
   std::ostringstream os;
   os << in.rdbuf();
   return os.str();
@@ -83,14 +85,11 @@ bool matches(const sweep::CalibrationRow& r, const std::string& filter) {
   if (eq == std::string::npos) throw InputError("--filter '" + filter + "': expected KEY=VALUE");
   const std::string key = filter.substr(0, eq), value = filter.substr(eq + 1);
   const auto number = [&]() {
-    try {
-      std::size_t used = 0;
-      const double v = std::stod(value, &used);
-      if (used != value.size()) throw std::invalid_argument(value);
-      return v;
-    } catch (const std::exception&) {
-      throw InputError("--filter '" + filter + "': '" + value + "' is not a number");
+    double v = 0.0;
+    if (!parse_number(value, &v)) {
+      throw InputError("--filter '" + filter + "': '" + value + "' is not a finite number (decimal, e.g. 180)");
     }
+    return v;
   };
   if (key == "tug") return io::normalize_name(r.tug) == io::normalize_name(value) ||
                            io::normalize_name(r.tug).rfind(io::normalize_name(value), 0) == 0;
@@ -104,15 +103,19 @@ bool matches(const sweep::CalibrationRow& r, const std::string& filter) {
   throw InputError("--filter '" + filter + "': unknown key '" + key + "' (tug, tow, line, heading, wind, speed, case)");
 }
 
+// The --out directory was checked before any work (check_output_dir), so a
+// failure here is the system's (disk full, permissions changed): exit 1.
 void write_atomically(const fs::path& path, const std::string& text) {
   const fs::path tmp = path.string() + ".tmp";
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError("cannot write '" + tmp.string() + "'");
     out << text;
-    if (!out) throw InputError("cannot write '" + tmp.string() + "'");
+    out.flush();
+    if (!out) throw Error("validate: cannot write " + tmp.string() + " (in --out)");
   }
-  fs::rename(tmp, path);
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) throw Error("validate: cannot rename " + tmp.string() + " to " + path.string() + ": " + ec.message());
 }
 
 // Everything besides the case rows that decides an outcome: the run options
@@ -125,7 +128,7 @@ std::string run_signature(const validation::RunOptions& o, const io::ShipCatalog
   }
   std::sort(files.begin(), files.end());
   std::string hashes;
-  for (const auto& f : files) hashes += io::sha256_hex(read_text(f));
+  for (const auto& f : files) hashes += io::sha256_hex(read_text(f, "ship or towline file"));
   std::ostringstream os;
   os << "days_scale=" << fmt(o.days_scale) << " min_days=" << o.min_days
      << " response_frequencies=" << o.response_frequencies << " second_order_forces=" << o.second_order_forces
@@ -251,11 +254,11 @@ std::vector<validation::CaseOutcome> resume_journal(const fs::path& out, const s
   const fs::path signature_file = out / "run-signature.txt";
   std::vector<validation::CaseOutcome> done;
   if (!fresh && fs::exists(journal)) {
-    if (!fs::exists(signature_file) || read_text(signature_file) != signature) {
+    if (!fs::exists(signature_file) || read_text(signature_file, "--out journal") != signature) {
       throw InputError("--out " + out.string() + " holds cases computed with other options or ship files (" +
                        signature_file.string() + "); use another --out or --fresh");
     }
-    done = validation::parse_journal(read_text(journal));
+    done = validation::parse_journal(read_text(journal, "--out journal"));
   }
   write_atomically(signature_file, signature);
   std::string text = validation::journal_header() + "\n";
@@ -392,7 +395,7 @@ int run_validate(const Context& ctx, const ValidateArgs& a) {
   check_output_dir("--out", a.out_dir);
   const io::ShipCatalog catalog = load_catalog(ctx);
   const std::vector<sweep::CalibrationRow> rows =
-      select_rows(sweep::parse_calibration_csv(read_text(a.cases_path), a.cases_path, catalog), a);
+      select_rows(sweep::parse_calibration_csv(read_text(a.cases_path, "--cases"), a.cases_path, catalog), a);
   const validation::RunOptions options = run_options(a);
 
   const fs::path out(a.out_dir);
@@ -476,14 +479,8 @@ int run_validate_database(const Context& ctx, const ValidateArgs& a) {
   check_output_dir("--out", a.out_dir);
   const io::ShipCatalog catalog = load_catalog(ctx);
   const std::vector<sweep::CalibrationRow> rows =
-      select_rows(sweep::parse_calibration_csv(read_text(a.cases_path), a.cases_path, catalog), a);
-  std::unique_ptr<query::Database> db;
-  try {
-    db = std::make_unique<query::Database>(a.database);
-  } catch (const query::QueryError& e) {
-    if (e.is_input()) throw InputError("--database: " + std::string(e.what()));
-    throw;
-  }
+      select_rows(sweep::parse_calibration_csv(read_text(a.cases_path, "--cases"), a.cases_path, catalog), a);
+  const std::unique_ptr<query::Database> db = open_query_database("--database", a.database);
   const fs::path out(a.out_dir);
   if (fs::exists(out / "run-signature.txt")) {  // never overwrite the resume state of a simulation run
     throw InputError("--out = " + a.out_dir + ": holds a simulation run's journal (run-signature.txt, cases.csv); " +

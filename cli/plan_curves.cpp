@@ -156,15 +156,6 @@ query::QueryRequest to_request(const PlanQuestion& q) {
   return r;
 }
 
-std::unique_ptr<query::Database> open_plan_database(const std::string& path) {
-  try {
-    return std::make_unique<query::Database>(path);
-  } catch (const query::QueryError& e) {
-    if (e.is_input()) throw InputError("--db = " + path + ": " + e.what());
-    throw;
-  }
-}
-
 Plan make_plan(query::Database& db, const PlanQuestion& q) {
   Plan p;
   p.request = to_request(q);

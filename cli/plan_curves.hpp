@@ -73,11 +73,6 @@ struct Plan {
 // The query library's request for the question's chosen point.
 query::QueryRequest to_request(const PlanQuestion& q);
 
-// Opens the database for `towdb plan` and `towdb serve`: a library error that
-// is the user's (missing file, not a towdb database) is an InputError naming
-// --db.
-std::unique_ptr<query::Database> open_plan_database(const std::string& path);
-
 // Answers the chosen point first (its errors are the question's: the library's
 // InputError names the field), then samples the three curves.
 Plan make_plan(query::Database& db, const PlanQuestion& q);

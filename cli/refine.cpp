@@ -12,6 +12,7 @@
 #include "common/error.hpp"
 #include "database_basis.hpp"
 #include "output.hpp"
+#include "query_database.hpp"
 #include "store/database.hpp"
 #include "towdb/query.hpp"
 
@@ -101,7 +102,8 @@ void score_cell(query::Database& db, const Group& g, CellScore* cell) {
         sum += v.interpolation_error_kips / v.dynamic_999_kips;
         ++cell->questions;
       }
-    } catch (const query::QueryError&) {
+    } catch (const query::QueryError& e) {
+      if (!e.is_input()) throw;
       // A question the database refuses (e.g. a factor it does not store) adds nothing.
     }
   }
@@ -176,7 +178,8 @@ RefinePlan plan_refinement(const std::filesystem::path& db_path, const sweep::Sw
                            const RefineOptions& options) {
   options.validate();
   const std::vector<Group> groups = read_groups(db_path);
-  query::Database db(db_path.string(), TOWDB_QUERY_SPACE_AUTO);
+  const std::unique_ptr<query::Database> opened = open_query_database("--db", db_path.string());
+  query::Database& db = *opened;
   RefinePlan plan;
   for (const Group& g : groups) {
     const std::string name = g.tug + " / " + g.tow + " / " + g.line;

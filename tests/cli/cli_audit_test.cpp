@@ -6,7 +6,8 @@
 //   cli-audit-2  the summary is stored in meta.last_audit and `towdb status` shows it
 //   cli-audit-3  the same seed gives the same JSON with 1 and 2 threads
 //   cli-audit-4  bad input exits 2 naming the field, the value and the allowed range,
-//                and stores nothing
+//                and stores nothing; so does a database whose stored values the query
+//                library refuses
 //   cli-audit-5  a read-only database is refused before any work (not as root)
 //   cli-audit-6  query without --mean-tension-lbf: the calculated mean tension of the
 //                database's recorded sweep basis (= towdb mean-tension in head seas),
@@ -234,6 +235,20 @@ TEST_F(CliAudit, BadInputExitsTwoAndStoresNothing) {  // cli-audit-4
     for (const std::string& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << args << "\n" << r.err;
   }
   EXPECT_EQ(meta_value(db_, "last_audit"), "");
+
+  // A database whose stored value the query library refuses on open (a
+  // negative Gumbel scale): bad input, exit 2, naming the flag and the value.
+  const auto lying = dir_ / "lying.towdb";
+  std::filesystem::copy_file(db_, lying);
+  {
+    auto db = store::Database::open(lying, store::Database::Mode::kReadWrite);
+    db.exec("PRAGMA ignore_check_constraints = ON; UPDATE results SET gumbel_alpha_per_kip = -0.2 WHERE case_id = 2");
+  }
+  const CommandResult r = run_towdb(audit(lying, "--draws 2"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--db = "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("gumbel_alpha_per_kip = -0.2"), std::string::npos) << r.err;
+  EXPECT_EQ(meta_value(lying, "last_audit"), "");
 }
 
 TEST_F(CliAudit, ReadOnlyDatabaseIsRefusedBeforeAnyWork) {  // cli-audit-5

@@ -11,7 +11,8 @@
 //                 computes exactly the planned cases; the refined group's grid is complete
 //                 (a question at the new node is answered) and the new node's cell scores lower
 //   cli-refine-3  bad input (threshold, budget, axis, --append with --toml, a sweep without
-//                 the database's groups): exit 2 naming the field; the sweep file unchanged
+//                 the database's groups, a stored value the query library refuses): exit 2
+//                 naming the field; the sweep file unchanged
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -20,6 +21,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "store/database.hpp"
 #include "sweep/sweep.hpp"
 #include "sweep_test_runner.hpp"
 #include "test_support.hpp"
@@ -184,6 +186,18 @@ TEST_F(CliRefine, BadInputExitsTwoAndLeavesTheSweepAlone) {  // cli-refine-3
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("no group of"), std::string::npos) << r.err;
   EXPECT_EQ(read_text(other), text);
+  // A stored value the query library refuses on open (a negative Gumbel scale).
+  {
+    auto db = store::Database::open(db_, store::Database::Mode::kReadWrite);
+    db.exec(
+        "PRAGMA ignore_check_constraints = ON; UPDATE results SET gumbel_alpha_per_kip = -0.2 "
+        "WHERE case_id = (SELECT MIN(case_id) FROM results)");
+  }
+  const CommandResult lying = run_towdb(args("--append"));
+  EXPECT_EQ(lying.exit_code, 2) << lying.err;
+  EXPECT_NE(lying.err.find("--db = "), std::string::npos) << lying.err;
+  EXPECT_NE(lying.err.find("gumbel_alpha_per_kip = -0.2"), std::string::npos) << lying.err;
+  EXPECT_EQ(read_text(sweep_), original);
 }
 
 }  // namespace

@@ -13,7 +13,8 @@
 //                byte for byte as it was
 //   cli-serve-6  load: 2,000 requests from 8 clients on loopback, no error, every answer
 //                the expected one; latency percentiles printed (docs/performance.md)
-//   cli-serve-7  bad flags exit 2 naming the flag: --port 70000, a missing database
+//   cli-serve-7  bad flags exit 2 naming the flag: --port 70000, a missing database, a
+//                --bind address no interface of this machine has
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -241,6 +242,11 @@ TEST(CliServeFlags, BadFlagsExit2) {  // cli-serve-7
   const CommandResult db = run_towdb("serve --db no-such.sqlite --port 0");
   EXPECT_EQ(db.exit_code, 2);
   EXPECT_NE(db.err.find("--db = no-such.sqlite"), std::string::npos) << db.err;
+  // An address no interface of this machine has (TEST-NET-1, RFC 5737; numeric, so
+  // no name lookup is involved).
+  const CommandResult bind = run_towdb("serve --db db/towdb.sqlite --port 0 --bind 192.0.2.1");
+  EXPECT_EQ(bind.exit_code, 2) << bind.err;
+  EXPECT_NE(bind.err.find("--bind = 192.0.2.1"), std::string::npos) << bind.err;
 }
 
 }  // namespace

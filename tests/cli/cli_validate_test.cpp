@@ -156,7 +156,7 @@ TEST(CliValidate, DatabaseAnswersAreTheQuerysAndRefusalsAreNamed) {  // cli-vali
                                           (dir / "out2").string() + "' --database '" + (dir / "none.sqlite").string() +
                                           "'");
   EXPECT_EQ(missing.exit_code, 2);
-  EXPECT_NE(missing.err.find("--database: " + (dir / "none.sqlite").string()), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("--database = " + (dir / "none.sqlite").string()), std::string::npos) << missing.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out2"));
   // A simulation run's journal (its resume state) is never overwritten.
   std::filesystem::create_directories(dir / "sim");
