@@ -276,8 +276,8 @@ TEST(SimulationCase, LinearHeadingProfileHasTheBeamSeaMinimum) {  // case-6, EVI
     at.sea.systems[0].heading_rad = units::deg_to_rad(headings[j]);
     EXPECT_EQ(sigma[j], std::sqrt(linear_tension_variance_n2(at, o))) << headings[j];
   }
-  // The simulated ratios 38.5 / 131 = 0.29 and 38.5 / 70 = 0.55 (measured 2026-12-05 with this
-  // chain: the linear sigma is 22.8 / 6.5 / 11.4 kips, ratios 0.28 and 0.57).
+  // The simulated ratios are 38.5 / 131 = 0.29 and 38.5 / 70 = 0.55; this chain's linear sigma is
+  // 22.8 / 6.5 / 11.4 kips, ratios 0.28 and 0.57.
   EXPECT_LT(sigma[1], 0.4 * sigma[0]);
   EXPECT_LT(sigma[1], 0.7 * sigma[2]);
   CaseInputs swell = in;

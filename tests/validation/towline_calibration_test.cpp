@@ -132,8 +132,8 @@ TEST(TowlineCalibration, FiberLinesFitWithinTenPercent) { check_lines(calibratio
 // KNOWN LIMITATION (disabled; run with --gtest_also_run_disabled_tests): the
 // wire lines pass only when nearly straight (2000 ft at 133,000 lbf, 1000 ft
 // at 125,000 lbf); the others give 12-42 %. The least-squares fit is already
-// the best shared polynomial for the set. Two causes, measured (2026-12-02)
-// with the printed per-frequency diagnostic (taut samples):
+// the best shared polynomial for the set. Two causes, measured with the
+// printed per-frequency diagnostic (taut samples):
 //  * the tension depends on the extension's frequency (a catenary line's
 //    geometric stiffness at slow motion, nearly EA/L plus inertia and drag at
 //    wave frequencies), which one tau(xi, xi_dot) cannot represent: 2000 ft at
