@@ -370,17 +370,17 @@ struct SurgeKernel {
   // the loop through references cannot alias them.
   const SurgeParameters p;
   const TensionLaw law;
-  double mean;            // T: slack when tau <= -T
-  double inv_mass_line;   // cos^2 a1 / M1 + cos^2 a2 / M7
-  double hull_rate;       // max(B1/M1, B7/M7)
+  double mean_tension_n;          // T: slack when tau <= -T
+  double inv_mass_line_per_kg;    // cos^2 a1 / M1 + cos^2 a2 / M7
+  double hull_rate_per_s;         // max(B1/M1, B7/M7)
 
   SurgeKernel(const SurgeParameters& p_, const TensionLaw& law_)
       : p(p_),
         law(law_),
-        mean(law_.mean_tension_n()),
-        inv_mass_line(p_.cos_alpha_tug * p_.cos_alpha_tug / p_.tug_mass_kg +
+        mean_tension_n(law_.mean_tension_n()),
+        inv_mass_line_per_kg(p_.cos_alpha_tug * p_.cos_alpha_tug / p_.tug_mass_kg +
                       p_.cos_alpha_tow * p_.cos_alpha_tow / p_.tow_mass_kg),
-        hull_rate(std::max(p_.tug_damping_n_s_m / p_.tug_mass_kg, p_.tow_damping_n_s_m / p_.tow_mass_kg)) {}
+        hull_rate_per_s(std::max(p_.tug_damping_n_s_m / p_.tug_mass_kg, p_.tow_damping_n_s_m / p_.tow_mass_kg)) {}
 
   // The line's extension and its rate (EQ-SURGE-3).
   template <typename T>
@@ -409,7 +409,7 @@ struct SurgeKernel {
     const T tau = law.tension(xi, xi_dot);
     if (!p.linear_non_surge_tension) return tau;
     const T ns = p.non_surge_stiffness_n_m * g.xi_ns + p.non_surge_damping_n_s_m * g.xi_ns_dot;
-    return lanes::max(tau + ns, lanes::splat<T>(-mean));
+    return lanes::max(tau + ns, lanes::splat<T>(-mean_tension_n));
   }
 
   // Derivative of the state; also returns the tension it used.
@@ -428,7 +428,7 @@ struct SurgeKernel {
     T xi, xi_dot;
     law_extension(y, g0, xi, xi_dot);
     const T zero = lanes::splat<T>(0.0);
-    const T k_line = lanes::max(zero, law.stiffness(xi, xi_dot)) * inv_mass_line;
+    const T k_line = lanes::max(zero, law.stiffness(xi, xi_dot)) * inv_mass_line_per_kg;
     const T c_loc = lanes::max(zero, law.damping(xi, xi_dot));
     T omega;
     if constexpr (std::is_same_v<T, double>) {
@@ -444,7 +444,7 @@ struct SurgeKernel {
         }
       }
     }
-    return lanes::max(omega, c_loc * inv_mass_line + hull_rate);
+    return lanes::max(omega, c_loc * inv_mass_line_per_kg + hull_rate_per_s);
   }
 
   // Whether one step covers an interval of length dt at that rate (also for
@@ -467,7 +467,7 @@ struct SurgeKernel {
   // `xi` (the law's extension at the sample) is read on the first substep only.
   TOWDB_SURGE_INLINE void record(DayStatistics& stats, bool& was_slack, double tau, double h, bool first_substep,
                                  std::size_t sample_index, std::vector<double>* trace, double xi) const {
-    const bool slack = tau <= -mean;
+    const bool slack = tau <= -mean_tension_n;
     stats.min_tension_n = lanes::min(stats.min_tension_n, tau);
     if (slack) stats.slack_time_s += h;
     if (was_slack && !slack) ++stats.snatch_events;
@@ -522,7 +522,7 @@ struct SurgeKernel {
   // law without a slack limit has T = infinity and starts at max_tau = -T.)
   template <typename T>
   TOWDB_SURGE_INLINE auto peak_gate(T tau0, T tau1, T max_tau) const {
-    return lanes::negate(lanes::max(tau0, tau1) < max_tau - kPeakGateFraction * (max_tau + mean));
+    return lanes::negate(lanes::max(tau0, tau1) < max_tau - kPeakGateFraction * (max_tau + mean_tension_n));
   }
 
   // The running maximum after a step (EQ-SURGE-5): raised to step_peak where
@@ -700,7 +700,7 @@ DayStatistics integrate_one(const SurgeKernel<TensionLaw>& kernel, const DayForc
   const Records<1> r = records_of(f);
   const DaySteps steps = day_steps(options.warmup_s, dt, n);
   DayStatistics stats;
-  stats.max_tension_n = -kernel.mean;
+  stats.max_tension_n = -kernel.mean_tension_n;
   stats.min_tension_n = std::numeric_limits<double>::infinity();
   if (trace) trace->assign(n, 0.0);
   State y{0.0, 0.0, 0.0, 0.0};
@@ -737,7 +737,7 @@ TOWDB_SURGE_INLINE std::array<DayStatistics, K> integrate_days(const SurgeParame
   const detail::DaySteps steps = detail::day_steps(options.warmup_s, dt, n);
 
   detail::LaneStatistics<K, W> stats{};
-  stats.max_tension = lanes::splat<V>(-kernel.mean);
+  stats.max_tension = lanes::splat<V>(-kernel.mean_tension_n);
   stats.min_tension = lanes::splat<V>(std::numeric_limits<double>::infinity());
   stats.extension_min = lanes::splat<V>(std::numeric_limits<double>::infinity());
   stats.extension_max = lanes::splat<V>(-std::numeric_limits<double>::infinity());
@@ -763,7 +763,7 @@ TOWDB_SURGE_INLINE std::array<DayStatistics, K> integrate_days(const SurgeParame
       const ForcingOf<V> gm = detail::midpoint_lanes<K, W>(f, c);
       const ForcingOf<V> gb = detail::sample_lanes<K, W>(f, c.i1);
       V unused, tau1;
-      if (recording) stats.record(tau, kernel.law_extension_only(y, g0), -kernel.mean, dt, sample_index, trace);
+      if (recording) stats.record(tau, kernel.law_extension_only(y, g0), -kernel.mean_tension_n, dt, sample_index, trace);
       const StateOf<V> k2 = kernel.derivative(detail::axpy(y, 0.5 * dt, k1), gm, &unused);
       const StateOf<V> k3 = kernel.derivative(detail::axpy(y, 0.5 * dt, k2), gm, &unused);
       const StateOf<V> k4 = kernel.derivative(detail::axpy(y, dt, k3), gb, &unused);

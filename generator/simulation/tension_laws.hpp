@@ -31,17 +31,17 @@ struct PolynomialLaw {
   static constexpr bool kForcedInline = true;  // surge.hpp: may run on integrate_days_avx2
   const towline::TowlineFit* fit;
   towline::AboveBreakingModel model;
-  double x_lo, x_hi, v_max, x_b, k_spring, slack;
+  double x_lo_m, x_hi_m, v_max_m_s, x_b_m, k_spring_n_m, slack_n;
 
   PolynomialLaw(const towline::TowlineFit* f, towline::AboveBreakingModel m)
       : fit(f),
         model(m),
-        x_lo(f->summary().fit_xi_min_m),
-        x_hi(f->summary().fit_xi_max_m),
-        v_max(f->summary().fit_xi_dot_max_m_s),
-        x_b(f->summary().spring_onset_extension_m),
-        k_spring(f->summary().straight_spring_n_m),
-        slack(f->summary().slack_limit_n) {}
+        x_lo_m(f->summary().fit_xi_min_m),
+        x_hi_m(f->summary().fit_xi_max_m),
+        v_max_m_s(f->summary().fit_xi_dot_max_m_s),
+        x_b_m(f->summary().spring_onset_extension_m),
+        k_spring_n_m(f->summary().straight_spring_n_m),
+        slack_n(f->summary().slack_limit_n) {}
 
   // Evaluated four times per RK4 step: inlined into the loop (TOWDB_SURGE_INLINE,
   // simulation/surge.hpp); GCC 12 otherwise calls extended() out of line.
@@ -64,7 +64,7 @@ struct PolynomialLaw {
   // EQ-CASE-1 without the spring and slack limits.
   template <typename T>
   TOWDB_SURGE_INLINE T extended(T x, T v) const {
-    const T xc = lanes::clamp(x, x_lo, x_hi), vc = lanes::clamp(v, -v_max, v_max);
+    const T xc = lanes::clamp(x, x_lo_m, x_hi_m), vc = lanes::clamp(v, -v_max_m_s, v_max_m_s);
     const T zero = lanes::splat<T>(0.0);
     T tau = p(xc, vc);
     const auto x_out = x != xc, v_out = v != vc;  // outside the fitted range (rare)
@@ -75,47 +75,47 @@ struct PolynomialLaw {
   bool straight_spring() const { return model == towline::AboveBreakingModel::kStraightSpring; }
   template <typename T>
   TOWDB_SURGE_INLINE T unlimited(T x, T v) const {
-    const T b = lanes::splat<T>(x_b);
+    const T b = lanes::splat<T>(x_b_m);
     const auto above = x > b;
     if (!straight_spring() || !lanes::any(above)) return extended(x, v);
-    return lanes::select(above, extended(b, v) + k_spring * (x - b), extended(x, v));
+    return lanes::select(above, extended(b, v) + k_spring_n_m * (x - b), extended(x, v));
   }
   template <typename T>
   TOWDB_SURGE_INLINE T tension(T x, T v) const {
-    return lanes::max(unlimited(x, v), lanes::splat<T>(slack));
+    return lanes::max(unlimited(x, v), lanes::splat<T>(slack_n));
   }
   template <typename T>
   TOWDB_SURGE_INLINE T stiffness(T x, T v) const {
-    const T xc = lanes::clamp(x, x_lo, x_hi), vc = lanes::clamp(v, -v_max, v_max);
+    const T xc = lanes::clamp(x, x_lo_m, x_hi_m), vc = lanes::clamp(v, -v_max_m_s, v_max_m_s);
     const T d = dp_dx(xc, vc);
     const T k = lanes::select(x != xc, lanes::max(lanes::splat<T>(0.0), d), d);
-    return straight_spring() ? lanes::select(x > lanes::splat<T>(x_b), lanes::splat<T>(k_spring), k) : k;
+    return straight_spring() ? lanes::select(x > lanes::splat<T>(x_b_m), lanes::splat<T>(k_spring_n_m), k) : k;
   }
   template <typename T>
   TOWDB_SURGE_INLINE T damping(T x, T v) const {
-    if (straight_spring()) x = lanes::select(x > lanes::splat<T>(x_b), lanes::splat<T>(x_b), x);
-    const T xc = lanes::clamp(x, x_lo, x_hi), vc = lanes::clamp(v, -v_max, v_max);
+    if (straight_spring()) x = lanes::select(x > lanes::splat<T>(x_b_m), lanes::splat<T>(x_b_m), x);
+    const T xc = lanes::clamp(x, x_lo_m, x_hi_m), vc = lanes::clamp(v, -v_max_m_s, v_max_m_s);
     const T d = dp_dv(xc, vc);
     return lanes::select(v != vc, lanes::max(lanes::splat<T>(0.0), d), d);
   }
-  double mean_tension_n() const { return -slack; }
+  double mean_tension_n() const { return -slack_n; }
 };
 
 // tau = a10 xi + a01 xi', never slack (the linear-limit check).
 struct LinearLaw {
   static constexpr bool kForcedInline = true;  // surge.hpp: may run on integrate_days_avx2
-  double k, c;
+  double k_n_m, c_n_s_m;
   template <typename T>
   TOWDB_SURGE_INLINE T tension(T xi, T xd) const {
-    return k * xi + c * xd;
+    return k_n_m * xi + c_n_s_m * xd;
   }
   template <typename T>
   TOWDB_SURGE_INLINE T stiffness(T, T) const {
-    return lanes::splat<T>(k);
+    return lanes::splat<T>(k_n_m);
   }
   template <typename T>
   TOWDB_SURGE_INLINE T damping(T, T) const {
-    return lanes::splat<T>(c);
+    return lanes::splat<T>(c_n_s_m);
   }
   double mean_tension_n() const { return std::numeric_limits<double>::infinity(); }
 };

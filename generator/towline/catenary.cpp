@@ -38,10 +38,10 @@ Closure close_line(const model::Towline& line, double h_n, double v0_n) {
     c.x_m += inc.dx_m;
     c.y_m += inc.dy_m;
     c.p_m += inc.dp_m;
-    c.x_h += inc.dx_dh;
-    c.x_v += inc.dx_dv;
-    c.y_h += inc.dy_dh;
-    c.y_v += inc.dy_dv;
+    c.x_h += inc.dx_dh_m_n;
+    c.x_v += inc.dx_dv_m_n;
+    c.y_h += inc.dy_dh_m_n;
+    c.y_v += inc.dy_dv_m_n;
     v_n += seg.component.weight_in_water_n_m * seg.length_m;
   }
   return c;

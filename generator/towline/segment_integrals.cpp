@@ -69,10 +69,10 @@ SegmentIncrements segment_increments(double h_n, double v_start_n, double w_n_m,
   inc.dx_m = l * i1 + h_n * elastic;
   inc.dy_m = l * mean_u_over_r(a, b) + elastic * (v_start_n + 0.5 * w_n_m * l);
   inc.dp_m = l + h_n * elastic * mean_r(a, b);
-  inc.dx_dh = (l / h_n) * (i1 - i3) + elastic;  // <u^2/r^3> = <1/r> - <1/r^3>
-  inc.dx_dv = -(l / h_n) * i4;
-  inc.dy_dh = inc.dx_dv;
-  inc.dy_dv = (l / h_n) * i3 + elastic;
+  inc.dx_dh_m_n = (l / h_n) * (i1 - i3) + elastic;  // <u^2/r^3> = <1/r> - <1/r^3>
+  inc.dx_dv_m_n = -(l / h_n) * i4;
+  inc.dy_dh_m_n = inc.dx_dv_m_n;
+  inc.dy_dv_m_n = (l / h_n) * i3 + elastic;
   return inc;
 }
 

@@ -22,10 +22,10 @@ struct SegmentIncrements {
   double dx_m = 0.0;
   double dy_m = 0.0;
   double dp_m = 0.0;
-  double dx_dh = 0.0;  // [m/N]
-  double dx_dv = 0.0;
-  double dy_dh = 0.0;
-  double dy_dv = 0.0;
+  double dx_dh_m_n = 0.0;  // partial derivatives by H and V_0 [m/N]
+  double dx_dv_m_n = 0.0;
+  double dy_dh_m_n = 0.0;
+  double dy_dv_m_n = 0.0;
 };
 
 // Increments over an unstretched length `length_m` of a segment with
