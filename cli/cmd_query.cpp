@@ -442,7 +442,7 @@ int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean
     ++line_no;
     if (line.find_first_not_of(" \r") == std::string::npos) continue;
     // A row that cannot be read is reported on its own row like a bad question
-    // (the output keeps one row per input row; found by tests/fuzz/fuzz_batch_csv_test.cpp).
+    // (the output keeps one row per input row; tests/fuzz/regressions/batch).
     bool unterminated = false;
     const auto cells = io::csv::split_quoted(line, &unterminated);
     std::string row_error;
@@ -508,8 +508,8 @@ int run_batch(query::Database& db, const QueryArgs& defaults, MeanDefaults& mean
     }
   }
   // Bytes that are not UTF-8 (a name typed in Latin-1, echoed in an error) are
-  // written as U+FFFD: dump() would throw on them (exit 1; found by
-  // tests/fuzz/fuzz_batch_csv_test.cpp).
+  // written as U+FFFD: dump() would throw on them (an exit 1; regression input
+  // tests/fuzz/regressions/batch/invalid-utf8-in-a-name.csv).
   if (defaults.json) std::cout << all.dump(2, ' ', false, ordered_json::error_handler_t::replace) << "\n";
   return failures > 0 ? 2 : 0;
 }

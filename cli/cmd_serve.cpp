@@ -147,7 +147,7 @@ PlanQuestion to_question(const std::multimap<std::string, std::string>& params, 
     } else {
       std::string known;
       for (const auto& f : field_names()) known += (known.empty() ? "" : ", ") + f;
-      // An empty name is named by what it is (found by fuzz_http_api_test).
+      // An empty name is named by what it is (tests/fuzz/regressions/http).
       const std::string name = k.empty() ? "(empty name)" : k;
       throw BadRequest{name + ": unknown field; allowed: " + known, name};
     }
@@ -239,7 +239,7 @@ std::string read_file(const std::string& path) {
 void send_json(httplib::Response& res, int status, const ordered_json& j) {
   res.status = status;
   // A request's bytes echoed in a message need not be UTF-8: they are written
-  // as U+FFFD rather than failing the answer (found by fuzz_http_api_test).
+  // as U+FFFD rather than failing the answer (tests/fuzz/regressions/http).
   res.set_content(j.dump(-1, ' ', false, ordered_json::error_handler_t::replace), "application/json");
 }
 
@@ -370,7 +370,7 @@ std::thread stop_on_signal(httplib::Server& svr, sigset_t signals) {
 }
 
 // --bind must name an address of this machine: a name the resolver does not
-// know, or an address no interface has, is bad input (exit 2), found by
+// know, or an address no interface has, is bad input (exit 2), seen by
 // binding a socket to it on an ephemeral port. A failure to listen later (the
 // port in use) is not the user's flag: exit 1.
 void check_bind_address(const std::string& address) {

@@ -1325,7 +1325,7 @@ namespace {
 // the stored data (extrapolate = 1 and, e.g., wind_kt = 1e300 or length_ft =
 // 2^63) can overflow the interpolated confidence interval to inf, or take the
 // default mean tension (each node's highest stored one) to 0 or below, while
-// the call succeeded (found by tests/fuzz/fuzz_query_api_test.cpp). Refused as
+// the call succeeded (regression inputs: tests/fuzz/regressions/query_requests). Refused as
 // TOWDB_QUERY_NUMERICAL naming the answer's field (and, by the caller, the
 // request fields that were extrapolated).
 void require_physical_answer(const Answer& a) {

@@ -109,7 +109,7 @@ TEST_F(DatabaseLies, BadStoredValuesAreRefusedAndNamed) {  // query-lies-1
       {"UPDATE results SET gumbel_alpha_per_kip = -0.2 WHERE case_id = 2",
        {"case 2", "results.gumbel_alpha_per_kip = -0.2", "Gumbel scale"}},
       {"UPDATE results SET gumbel_alpha_per_kip = 0 WHERE case_id = 3", {"case 3", "results.gumbel_alpha_per_kip = 0"}},
-      // Found by tests/fuzz/fuzz_database_test.cpp: finite and > 0, but the scale 1/alpha overflows.
+      // Finite and > 0, but the scale 1/alpha overflows (tests/fuzz/regressions/database).
       {"UPDATE results SET gumbel_alpha_per_kip = 4.9e-324 WHERE case_id = 3",
        {"case 3", "results.gumbel_alpha_per_kip = 4.94065645841247e-324 gives the Gumbel scale 1/alpha = inf"}},
       {"UPDATE results SET gumbel_u_kips = 9e999 WHERE case_id = 2", {"case 2", "results.gumbel_u_kips = inf"}},
