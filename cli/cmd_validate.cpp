@@ -64,7 +64,7 @@ struct ValidateArgs {
   std::string non_surge_stiffness = "a10";
   bool nonnegative_wave_damping = false;
   double encounter_cutoff_rad_s = simulation::kEncounterCutoff_rad_s;
-  bool surge_diffraction = false;
+  bool no_surge_diffraction = false;
   std::string database;  // --database: answers of this database instead of simulations
 };
 
@@ -241,7 +241,7 @@ validation::RunOptions run_options(const ValidateArgs& a) {
   options.non_surge_stiffness = non_surge_stiffness(a.non_surge_stiffness);
   options.nonnegative_wave_damping = a.nonnegative_wave_damping;
   options.encounter_cutoff_rad_s = a.encounter_cutoff_rad_s;
-  options.surge_diffraction = a.surge_diffraction;
+  options.surge_diffraction = !a.no_surge_diffraction;
   options.validate();
   return options;
 }
@@ -345,7 +345,7 @@ std::string run_note(const ValidateArgs& a, const std::vector<validation::CaseOu
   if (a.encounter_cutoff_rad_s != simulation::kEncounterCutoff_rad_s) {
     note << " --encounter-cutoff-rad-s " << fmt(a.encounter_cutoff_rad_s);
   }
-  if (a.surge_diffraction) note << " --surge-diffraction";
+  if (a.no_surge_diffraction) note << " --no-surge-diffraction";
   note << "`. Simulated days per case = max(" << a.min_days << ", round(" << fmt(a.days_scale)
        << " x thesis days)); seed = thesis case number. Sum of case run times " << fmt(case_time_s, 0)
        << " s (this invocation: " << fmt(wall_s, 0) << " s wall, " << reused << " cases reused from the journal).";
@@ -563,8 +563,9 @@ void add_validate_command(CLI::App& app, Context& ctx) {
                 "Diagnostic: encounter-frequency cutoff of the forcing records (default 3; the thesis's 5D grid "
                 "ends at 2)")
       ->check(number_in(1.0, simulation::kEncounterCutoff_rad_s));
-  c->add_flag("--surge-diffraction", a->surge_diffraction,
-              "Diagnostic: add the surge diffraction force (A11 / rho V)(w_e / w) x Froude-Krylov (EQ-STRIP-7)");
+  c->add_flag("--no-surge-diffraction", a->no_surge_diffraction,
+              "Diagnostic: leave out the surge diffraction force (A11 / rho V)(w_e / w) x Froude-Krylov "
+              "(EQ-STRIP-7; the 0.3.0 chain)");
   CLI::Option* database = c->add_option(
       "--database", a->database,
       "Ask each case of a towdb database (query library, the thesis's inputs) instead of simulating it");
@@ -572,7 +573,7 @@ void add_validate_command(CLI::App& app, Context& ctx) {
        {"--threads", "--days-scale", "--min-days", "--response-frequencies", "--fresh", "--no-second-order-forces",
         "--no-wave-surge-damping", "--thesis-towline-fit", "--tow-drift-at-tow", "--added-resistance-aft-of-beam",
         "--signed-drift", "--linear-non-surge-tension", "--non-surge-stiffness", "--nonnegative-wave-damping",
-        "--encounter-cutoff-rad-s", "--surge-diffraction"}) {
+        "--encounter-cutoff-rad-s", "--no-surge-diffraction"}) {
     database->excludes(c->get_option(simulation_only));
   }
   c->callback([&ctx, a] {
