@@ -5,7 +5,9 @@
 //                a failed check exits 3, both passed 0
 //   cli-query-3  --batch answers every CSV row; a bad row is reported and exits 2
 //   cli-query-4  bad input (unknown vessel, NaN, length < 0, heading 400, p = 0 and 1,
-//                missing flags, missing or corrupt database) -> exit 2 with a named message
+//                missing flags, missing or corrupt database) -> exit 2 with a named message; a
+//                question outside the stored span names the `towdb simulate` command that
+//                computes it directly, and that command runs
 //   cli-query-5  max-speed / min-length land on the analytic crossing
 //   cli-query-6  thesis Appendix C rows: each answered exactly at its node (batch), and
 //                export --format appendix-c reproduces the rows
@@ -186,6 +188,19 @@ TEST_F(CliQuery, BadInputExitsTwoWithANamedMessage) {  // cli-query-4
   const CommandResult range = run_towdb(base() + "--speed-kt 12 --length-ft 1200 --mean-tension-lbf 70000");
   EXPECT_EQ(range.exit_code, 2);
   EXPECT_NE(range.err.find("speed_kt = 12 is outside the stored range [3, 9] kt"), std::string::npos) << range.err;
+  // The refusal names the command that computes the question directly, and
+  // that command runs (shortened to 3 days).
+  const std::string hint = "or compute it directly: towdb ";
+  const std::size_t at = range.err.find(hint);
+  ASSERT_NE(at, std::string::npos) << range.err;
+  std::string direct = range.err.substr(at + hint.size());
+  direct = direct.substr(0, direct.find('\n'));
+  const std::size_t days = direct.find(" --days 100");
+  ASSERT_NE(days, std::string::npos) << direct;
+  EXPECT_NE(direct.find("--speed-kt 12 "), std::string::npos) << direct;
+  EXPECT_NE(direct.find("--mean-tension-lbf 70000 "), std::string::npos) << direct;
+  const CommandResult simulated = run_towdb(direct.replace(days, 11, " --days 3 --json"));
+  EXPECT_EQ(simulated.exit_code, 0) << direct << "\n" << simulated.err;
   const CommandResult extrap =
       run_towdb(base() + "--speed-kt 12 --length-ft 1200 --mean-tension-lbf 70000 --extrapolate --json");
   ASSERT_EQ(extrap.exit_code, 3) << extrap.err;  // answered; the extreme check fails
