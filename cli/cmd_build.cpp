@@ -47,14 +47,10 @@ struct BuildArgs {
   bool json = false;
 };
 
-std::string quoted(const std::string& s) {
-  return s.find_first_of(" \t'\"") == std::string::npos ? s : "'" + s + "'";
-}
-
 std::string command_line(const Context& ctx, const BuildArgs& a) {
   std::string c = "towdb";
-  if (!ctx.ships_dir.empty()) c += " --ships-dir " + quoted(ctx.ships_dir);
-  c += " build --sweep " + quoted(a.sweep) + " --db " + quoted(a.db);
+  if (!ctx.ships_dir.empty()) c += " --ships-dir " + shell_word(ctx.ships_dir);
+  c += " build --sweep " + shell_word(a.sweep) + " --db " + shell_word(a.db);
   if (a.threads > 0) c += " --threads " + std::to_string(a.threads);
   if (a.resume) c += " --resume";
   if (a.retry_failed) c += " --retry-failed";

@@ -562,7 +562,8 @@ int run_loo(query::Database& db, bool json) {
 // of the two vessels' strip theory).
 std::string simulate_command(const QueryRequest& rq) {
   const towdb_query_request& v = rq.values;
-  std::string c = "towdb simulate --tug '" + rq.tug + "' --tow '" + rq.tow + "' --speed-kt " + fmt(v.speed_kt);
+  std::string c = "towdb simulate --tug " + shell_word(rq.tug) + " --tow " + shell_word(rq.tow) + " --speed-kt " +
+                  fmt(v.speed_kt);
   if (std::isfinite(v.wind_kt)) c += " --wind-kt " + fmt(v.wind_kt);
   if (std::isfinite(v.hs_ft)) c += " --hs-ft " + fmt(v.hs_ft) + " --tp-s " + fmt(v.tp_s);
   if (rq.spectrum == "jonswap" || rq.spectrum == "bretschneider") c += " --spectrum " + rq.spectrum;

@@ -60,4 +60,8 @@ std::string fmt_grouped(double value) {
   return v < 0 ? "-" + out : out;
 }
 
+std::string shell_word(const std::string& s) {
+  return s.find_first_of(" \t'\"") == std::string::npos ? s : "'" + s + "'";
+}
+
 }  // namespace towdb::cli

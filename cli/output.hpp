@@ -25,6 +25,9 @@ class TextTable {
 std::string fmt(double value, int decimals = -1);
 // Thousands separators for a rounded integer value: 125000 -> "125,000".
 std::string fmt_grouped(double value);
+// A word of a shell command line the user can paste: in single quotes when it
+// holds a blank or a quote ("LHA 1" -> "'LHA 1'"), else as it is.
+std::string shell_word(const std::string& s);
 
 }  // namespace towdb::cli
 
