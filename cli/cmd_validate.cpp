@@ -134,7 +134,9 @@ std::string run_signature(const validation::RunOptions& o, const io::ShipCatalog
      << " response_frequencies=" << o.response_frequencies << " second_order_forces=" << o.second_order_forces
      << " wave_surge_damping=" << o.wave_surge_damping << " thesis_towline_fit=" << o.thesis_towline_fit
      << " tow_drift_at_tow=" << o.tow_drift_at_tow;
-  // Written only when set, so that journals of the default chain stay valid.
+  // The diagnostics, each written only when set, so that journals of the default
+  // chain stay valid; surge_diffraction is the default since 0.4.0, so a 0.3.0
+  // journal (without it) no longer matches and its cases are computed again.
   if (o.added_resistance_aft_of_beam) os << " added_resistance_aft_of_beam=1";
   if (o.signed_drift) os << " signed_drift=1";
   if (o.linear_non_surge_tension) os << " linear_non_surge_tension=1";

@@ -983,7 +983,6 @@ mean_tensions = [ { label = "given-60k", basis = "given", value_lbf = 60000.0 } 
   EXPECT_EQ(query_int(two, "SELECT count(*) FROM speed_profiles"), 0);
 }
 
-
 TEST(SweepBuild, ProfilesLeaveOutTheWaveInducedSurgeDamping) {  // sweep-build-20
   Fixture f;
   const sweep::CaseSpec& spec = f.cases.front();  // the small sweep's first case, at 5 kt

@@ -20,7 +20,8 @@
 // the stored cases' own tensions joined geometrically: constant for an
 // absolute rule, and for a factor exactly the factor times the query's
 // T_calc, which the query interpolates the same way (query.h EQ-QUERY-9).
-// At a stored speed the profile point is the case's own linear model.
+// At a stored speed the profile point is the case's own linear model without
+// the wave-induced surge damping (simulation_runner.hpp profile_options).
 //
 // Keys, resumability, determinism (as EQ-SWEEP-8):
 //   - profile_key = SHA-256 of "speed-profile/2", the step and the sorted
