@@ -535,16 +535,22 @@ TEST_F(QueryTest, IncompleteGridIsRefusedThenRenormalised) {
   EXPECT_EQ(node.values.extrapolated, 0);
 }
 
+// The searches' analytic data (query-interp-12, 21): dynamic_999(s, l) = 250 + 10 s - 0.1 l + 5 y_999 kips
+// at a mean tension of 70,000 lbf at every node.
+GridSpec crossing_grid() {
+  GridSpec g;
+  g.nominal_mean_lbf = [](double, double) { return 70000.0; };
+  g.u_kips = [](double s, double, double, double l, double) { return 250.0 + 10.0 * s - 0.1 * l; };
+  g.beta_kips = [](double, double, double, double, double) { return 5.0; };
+  return g;
+}
+
 // query-interp-12
 TEST_F(QueryTest, InverseQueriesFindTheAnalyticCrossing) {
   // EVIDENCE-OF: EQ-QUERY-5. dynamic_999(s, l) = 250 + 10 s - 0.1 l + 5 y_999
   // (y_999 = -ln(-ln 0.999)); with mean 70,000 lbf and BS 360,000 lbf the
   // extreme check is mean + 1000 x <= 240,000 lbf, i.e. x <= 170 kips.
-  GridSpec g;
-  g.nominal_mean_lbf = [](double, double) { return 70000.0; };
-  g.u_kips = [](double s, double, double, double l, double) { return 250.0 + 10.0 * s - 0.1 * l; };
-  g.beta_kips = [](double, double, double, double, double) { return 5.0; };
-  Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LINEAR);
+  Database db(write(grid_cases(crossing_grid())), TOWDB_QUERY_SPACE_LINEAR);
   const double y = reduced_variate_999();
   // Bisection to 1e-6 of the searched range (query.h).
   constexpr double kSpeedTol_kt = 1e-5, kLengthTol_ft = 1e-2;
@@ -961,11 +967,7 @@ TEST_F(QueryTest, SearchesResolveTheSeaIgnoreTheirFieldAndNeverExtrapolate) {
   // EVIDENCE-OF: query.h towdb_query_max_speed ("request->speed_kt ignored ... Extrapolation is never used by a
   // search") with EQ-QUERY-10 (a sea given as Hs answered at the equivalent wind). Same analytic data as
   // query-interp-12: the crossing at (170 - 250 + 0.1 l - 5 y_999) / 10 kt.
-  GridSpec g;
-  g.nominal_mean_lbf = [](double, double) { return 70000.0; };
-  g.u_kips = [](double s, double, double, double l, double) { return 250.0 + 10.0 * s - 0.1 * l; };
-  g.beta_kips = [](double, double, double, double, double) { return 5.0; };
-  Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LINEAR);
+  Database db(write(grid_cases(crossing_grid())), TOWDB_QUERY_SPACE_LINEAR);
   const auto by_wind = db.max_speed(request(kNoValue, 30.0, 60.0, 1800.0, 70000.0));
   ASSERT_EQ(by_wind.search.found, 1);
 
