@@ -442,6 +442,7 @@ struct Corner {
   double weight;
   std::array<int, kGridAxes> idx;
   NodeValue value;
+  double profile_factor;  // sigma(x_q) / sigma(x_c) of the EQ-QUERY-11/12 moves applied (1: none)
 };
 
 struct Evaluation {
@@ -470,6 +471,10 @@ struct MeanTarget {
   // evaluations; NaN: leave them at the stored heading).
   double heading_deg = kNaN;
   double speed_kt = kNaN;  // EQ-QUERY-12: the same along speed
+  // EQ-QUERY-7's pinned evaluations: false where the question's own evaluation
+  // could not move along that axis (a corner without a profile), so that the
+  // estimate differences values of one kind, never moved against unmoved ones.
+  bool move_heading = true, move_speed = true;
 };
 
 // EQ-QUERY-11/12: moves each corner's value from its node's coordinate x_c
@@ -500,6 +505,7 @@ bool shift_along(const Group& g, int axis, double xq, int MeanPoint::*slot, cons
     };
     const double shift = v.p0 == v.p1 ? shift_of(v.p0) : (1.0 - v.t) * shift_of(v.p0) + v.t * shift_of(v.p1);
     const double f = std::exp(shift);
+    c.profile_factor *= f;
     if (s == Space::kLog) {
       v.g_u += shift;
       v.g_beta += shift;
@@ -549,6 +555,7 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
       w *= hi ? br[a].t : 1.0 - br[a].t;
     }
     c.weight = w;
+    c.profile_factor = 1.0;
     if (w == 0.0) continue;
     const int node = g.node_index(c.idx);
     if (node < 0) {
@@ -594,10 +601,10 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
   }
   const double hq = cell_coordinate(g, br, kHeading, target.heading_deg);
   const double vq = cell_coordinate(g, br, kSpeed, target.speed_kt);
-  ev->heading_profiled =
-      std::isfinite(hq) && shift_along(g, kHeading, hq, &MeanPoint::profile, g.profiles, s, ev, n_corners);
-  ev->speed_profiled =
-      std::isfinite(vq) && shift_along(g, kSpeed, vq, &MeanPoint::speed_profile, g.speed_profiles, s, ev, n_corners);
+  ev->heading_profiled = target.move_heading && std::isfinite(hq) &&
+                         shift_along(g, kHeading, hq, &MeanPoint::profile, g.profiles, s, ev, n_corners);
+  ev->speed_profiled = target.move_speed && std::isfinite(vq) &&
+                       shift_along(g, kSpeed, vq, &MeanPoint::speed_profile, g.speed_profiles, s, ev, n_corners);
   double gu = 0.0, gb = 0.0, g_lo = 0.0, g_hi = 0.0;
   ev->mean_lbf = ev->slack = ev->sag_ft = ev->lowest_ft = ev->ci_low = ev->ci_high = 0.0;
   ev->bs_min = std::numeric_limits<double>::infinity();
@@ -739,6 +746,8 @@ double interpolation_error_kips(const Group& g, const Brackets& br, const Evalua
     // too: the estimate then measures how x / sigma changes between the
     // stored values (a value that could not be moved is not available).
     MeanTarget at = target;
+    at.move_heading = ev.heading_profiled;
+    at.move_speed = ev.speed_profiled;
     const bool moved = (a == kHeading && ev.heading_profiled) || (a == kSpeed && ev.speed_profiled);
     const double xq = (1.0 - br[a].t) * ax[br[a].i0] + br[a].t * ax[br[a].i1];
     if (moved && a == kHeading) at.heading_deg = xq;
@@ -760,7 +769,9 @@ double interpolation_error_kips(const Group& g, const Brackets& br, const Evalua
     err += scale * axis_error(static_cast<int>(ax.size()), br[a].i0, br[a].i1, br[a].t, kChordSagFloor,
                               [&](int i) { return ax[i]; }, f_at);
   }
-  // Each corner's own mean tensions (no chord floor: it was calibrated on the grid axes; docs/audit.md).
+  // Each corner's own mean tensions (no chord floor: it was calibrated on the grid axes; docs/audit.md),
+  // moved as the corner was (EQ-QUERY-11/12): in linear space its values scale by the profile factor, in
+  // log space their differences do not change.
   const int n_corners = 1 << ev.active_count;
   for (int mask = 0; mask < n_corners; ++mask) {
     const Corner& cn = ev.corners[mask];
@@ -769,7 +780,7 @@ double interpolation_error_kips(const Group& g, const Brackets& br, const Evalua
     const double e_mean = axis_error(
         static_cast<int>(pts.size()), cn.value.p0, cn.value.p1, cn.value.t, 0.0,
         [&](int i) { return pts[i].mean_lbf; }, [&](int i) { return g_of(pts[i].u_kips + pts[i].beta_kips * c); });
-    err += scale * std::abs(cn.weight) * e_mean;
+    err += scale * std::abs(cn.weight) * (log_space ? 1.0 : cn.profile_factor) * e_mean;
   }
   return err;
 }

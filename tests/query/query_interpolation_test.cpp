@@ -25,7 +25,8 @@
 //                   a Tp far from that sea's refused naming both periods (EQ-QUERY-10)
 //   query-interp-18 heading profiles (EQ-QUERY-11): data equal to a smooth factor times a line's stored
 //                   profile are exact between stored headings, in log and linear space; a cell with a
-//                   corner without a profile is interpolated as before, never half corrected
+//                   corner without a profile is interpolated as before, never half corrected, and so is its
+//                   error estimate; the estimate along a corner's mean tensions moves with the corner
 //   query-interp-20 speed profiles (EQ-QUERY-12): data equal to a smooth factor times a line's stored speed
 //                   profile (a fold-like swing inside a 2 kt cell) are exact between stored speeds, alone and
 //                   with a heading profile; the error estimate along speed then vanishes
@@ -879,6 +880,46 @@ TEST_F(QueryTest, HeadingProfilesMakeDataProportionalToThemExactBetweenHeadings)
   EXPECT_LT(free_heading.values.interpolation_error_kips, 1e-9 * free_heading.values.dynamic_999_kips);
   const QueryResult plain_heading = plain_db.query(request(5.0, 20.0, 84.4, 1000.0, m));
   EXPECT_GT(plain_heading.values.interpolation_error_kips, 0.1 * plain_heading.values.dynamic_999_kips);
+
+  // EQ-QUERY-7 with a corner without a profile: the question is interpolated as without profiles, and so is
+  // every pinned evaluation of its estimate (a pinned half of the cell whose corners all have profiles is
+  // not moved while the other half is not): the estimate is the one without profiles.
+  // 50,000 lbf: between the 5 kt node's first two mean tensions (42,000 lbf, the case without a profile, and
+  // at least 59,500) and inside the 7 kt node's 49,200-94,300.
+  const QueryResult holed_cell = holed_db.query(request(6.0, 20.0, 70.0, 1000.0, 50000.0));
+  const QueryResult plain_cell = plain_db.query(request(6.0, 20.0, 70.0, 1000.0, 50000.0));
+  EXPECT_REL_CLOSE(holed_cell.values.interpolation_error_kips, plain_cell.values.interpolation_error_kips,
+                   kRoundOffRelTol);
+
+  // EQ-QUERY-7 along a corner's mean tensions, in linear space: the corner's values moved along the profile
+  // scale by sigma(h_q) / sigma(h_c), and so does their estimate. Data P(h) L(s, w, l, m), L linear in m:
+  // only the mean tensions of the corners with two stored ones contribute (the chord estimate, P(h_c) e_L
+  // each), so between the heading nodes 75 and 90 deg the estimate is P(h_q) ((1 - t) e_75 / P(75) +
+  // t e_90 / P(90)), e_x the estimate at heading x.
+  int nonzero = 0;
+  for (double ws : {20.0, 30.0}) {
+    for (double ls : {1000.0, 2000.0}) {
+      const auto [m0, m1] = common_mean_range(lin, 5.0, ws);
+      const double mq = m0 + 0.37 * (m1 - m0);
+      const double e75 = lin_db.query(request(5.0, ws, 75.0, ls, mq)).values.interpolation_error_kips;
+      const double e90 = lin_db.query(request(5.0, ws, 90.0, ls, mq)).values.interpolation_error_kips;
+      // Round-off of exactly linear data (about 1e-14 kips): no estimate to scale.
+      const double noise_kips = 1e-9 * lin_db.query(request(5.0, ws, 75.0, ls, mq)).values.dynamic_999_kips;
+      const bool estimated = std::max(e75, e90) > noise_kips;
+      nonzero += estimated ? 1 : 0;
+      for (double hq : {78.0, 84.4, 88.0}) {
+        const double t = (hq - 75.0) / 15.0;
+        const double expected = profile_at(hq) * ((1.0 - t) * e75 / profile_at(75.0) + t * e90 / profile_at(90.0));
+        const QueryResult r = lin_db.query(request(5.0, ws, hq, ls, mq));
+        if (estimated) {
+          EXPECT_REL_CLOSE(r.values.interpolation_error_kips, expected, 1e-9) << ws << " " << ls << " " << hq;
+        } else {
+          EXPECT_LT(r.values.interpolation_error_kips, noise_kips) << ws << " " << ls << " " << hq;
+        }
+      }
+    }
+  }
+  EXPECT_GT(nonzero, 0);  // some corner has two stored mean tensions: the check is not 0 = 0
 }
 
 // query-interp-20
