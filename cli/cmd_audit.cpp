@@ -245,14 +245,14 @@ int run_audit_command(const Context& ctx, const AuditArgs& a) {
   if (!a.plot.empty()) check_output_file("--plot", a.plot);
   if (!a.no_store) require_writable(a.db);
   const DatabaseSpan span = read_database_span(a.db);
-  const BasisLookup basis = read_database_basis(a.db);
+  const io::ShipCatalog catalog = load_catalog(ctx);
+  const BasisLookup basis = read_database_basis(a.db, &catalog);
   if (!basis.basis) {
     // Said on stderr in every output mode: such an audit asks other questions than the calculated basis would.
     std::cerr << "towdb audit: warning: the questions' mean tensions are drawn uniformly in the stored span, not at "
                  "the calculated mean tension: "
               << basis.reason << "\n";
   }
-  const io::ShipCatalog catalog = load_catalog(ctx);
   AuditOptions o;
   o.draws = a.draws;
   o.seed = a.seed;
