@@ -176,6 +176,23 @@ BasisLookup read_database_basis(const std::filesystem::path& db_path, const io::
                                                  : changed)};
 }
 
+std::vector<std::string> vessels_changed_since_build(const std::filesystem::path& db_path,
+                                                     const io::ShipCatalog& catalog,
+                                                     const std::vector<std::string>& names) {
+  store::Database db = store::Database::open(db_path, store::Database::Mode::kReadOnly);
+  std::vector<std::string> changed;
+  for (const std::string& name : names) {
+    const io::VesselFile* file = catalog.find_vessel(name);
+    if (file == nullptr) continue;
+    store::Statement st = db.prepare(
+        "SELECT count(*), coalesce(sum(content_sha256 = ?2), 0) FROM vessels WHERE name = ?1");
+    st.bind(1, file->vessel.name).bind(2, file->vessel.content_sha256);
+    st.step();
+    if (st.column_int(0) > 0 && st.column_int(1) == 0) changed.push_back(file->vessel.name);
+  }
+  return changed;
+}
+
 CalculatedMeanTension calculated_mean_tension(const DatabaseBasis& basis, const io::ShipCatalog& catalog,
                                               const std::filesystem::path& db_path, const std::string& tow_name,
                                               double speed_kt, double wind_kt, double heading_deg) {

@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -54,6 +55,13 @@ struct BasisLookup {
 // mean tension the database stores with its first such case (about 2 s of
 // strip theory).
 BasisLookup read_database_basis(const std::filesystem::path& db_path, const io::ShipCatalog* catalog = nullptr);
+
+// The vessels of `names` whose ship file in the catalog is not the one the
+// database was built with (its `vessels` table holds the name with another
+// content SHA-256); a name the table does not hold is not checked.
+std::vector<std::string> vessels_changed_since_build(const std::filesystem::path& db_path,
+                                                     const io::ShipCatalog& catalog,
+                                                     const std::vector<std::string>& names);
 
 // The calculated mean tension and its parts at the question's speed [kt],
 // wind [kt] and wave heading [deg] (EQ-SWEEP-1 as the sweep evaluates it).

@@ -17,6 +17,7 @@
 //   cli-audit-8  the query's default mean tension comes from the nodes' stored T_calc (query.h EQ-QUERY-9)
 //   cli-audit-9  a sweep file edited since the build (a comment) is still the audit's basis when its model
 //                reproduces the calculated mean tension the database stores; a changed model is not
+//   cli-audit-10 a ship file edited since the build is named (stderr and the summary)
 //
 // The databases are synthetic (tests/query/synthetic_db.hpp) and the direct
 // simulations 3 days long: the errors mean nothing here, only the bookkeeping.
@@ -261,6 +262,24 @@ TEST_F(CliAudit, ReadOnlyDatabaseIsRefusedBeforeAnyWork) {  // cli-audit-5
   EXPECT_NE(r.err.find("read-only"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--no-store"), std::string::npos) << r.err;
   chmod(db_.c_str(), 0644);
+}
+
+TEST_F(CliAudit, ShipFilesEditedSinceTheBuildAreNamed) {  // cli-audit-10
+  // The synthetic database records no ship files: nothing to compare, nothing named.
+  const CommandResult plain = run_towdb(audit(db_, "--draws 1 --json --no-store"));
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_TRUE(json::parse(plain.out).at("summary").at("ship_files_changed_since_build").empty());
+  // The LHA 1 recorded with another file's hash: the ships/ file is not the one the build used.
+  {
+    auto db = store::Database::open(db_, store::Database::Mode::kReadWrite);
+    db.exec("INSERT INTO vessels (name, role, file_path, content_sha256, file_text) "
+            "VALUES ('LHA 1', 'tow', 'ships/lha-1.toml', 'another-hash', '')");
+  }
+  const CommandResult r = run_towdb(audit(db_, "--draws 1 --json --no-store"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out).at("summary").at("ship_files_changed_since_build"), json::array({"LHA 1"}));
+  EXPECT_NE(r.err.find("the ship files of LHA 1 are not the ones the database was built with"), std::string::npos)
+      << r.err;
 }
 
 class CliQueryDefaultMean : public ::testing::Test {
