@@ -633,8 +633,9 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
     ev->mean_extrapolated = ev->mean_extrapolated || v.mean_extrapolated;
     single = &c;
   }
-  const bool at_stored_case = present == 1 && single->weight == 1.0 && single->value.p0 == single->value.p1;
-  if (present == 1 && single->weight == 1.0) {
+  const bool at_node = present == 1 && single->weight == 1.0;
+  const bool at_stored_case = at_node && single->value.p0 == single->value.p1;
+  if (at_node) {
     // At a stored node: the node's values (at a stored case, bit for bit: no log/exp round trip).
     ev->u = node_u(single->value, s);
     ev->beta = node_beta(single->value, s);
@@ -1836,8 +1837,11 @@ SearchResult Engine::search(const Request& request, int axis, bool maximise) con
   field = 1.0;  // the searched field is ignored (query.h): a placeholder, validated below, then overwritten
   base.extrapolate = false;  // a search never extrapolates (query.h)
   base.validate();
-  double wind_from_hs_kt = kNaN;  // a sea given as Hs is searched as query() answers it (EQ-QUERY-10)
-  const Group& g = find_group(resolve_sea(base, &wind_from_hs_kt));
+  // A sea given as Hs is searched as query() answers it (EQ-QUERY-10): resolved
+  // once here, not again at every evaluation.
+  double wind_from_hs_kt = kNaN;
+  base = resolve_sea(base, &wind_from_hs_kt);
+  const Group& g = find_group(base);
   const auto& ax = g.axis[axis];
   SearchResult res;
   res.range_low = ax.front();
