@@ -68,13 +68,16 @@ BasisLookup basis_of_sweep(const sweep::SweepFile& file, const std::string& sour
   return {DatabaseBasis{*found, source}, ""};
 }
 
-// Whether the database's vessels table holds this exact ship file.
-bool database_has_ship_file(const std::filesystem::path& db_path, const model::Vessel& v) {
-  store::Database db = store::Database::open(db_path, store::Database::Mode::kReadOnly);
-  store::Statement st = db.prepare("SELECT count(*) FROM vessels WHERE name = ? AND content_sha256 = ?");
+// What the database's vessels table records of this vessel's ship file.
+enum class RecordedShipFile { kThisFile, kAnotherFile, kNone };
+
+RecordedShipFile recorded_ship_file(store::Database& db, const model::Vessel& v) {
+  store::Statement st =
+      db.prepare("SELECT count(*), coalesce(sum(content_sha256 = ?2), 0) FROM vessels WHERE name = ?1");
   st.bind(1, v.name).bind(2, v.content_sha256);
   st.step();
-  return st.column_int(0) > 0;
+  if (st.column_int(1) > 0) return RecordedShipFile::kThisFile;
+  return st.column_int(0) > 0 ? RecordedShipFile::kAnotherFile : RecordedShipFile::kNone;
 }
 
 // A stored case's calculated mean tension and the inputs it was computed at
@@ -183,12 +186,9 @@ std::vector<std::string> vessels_changed_since_build(const std::filesystem::path
   std::vector<std::string> changed;
   for (const std::string& name : names) {
     const io::VesselFile* file = catalog.find_vessel(name);
-    if (file == nullptr) continue;
-    store::Statement st = db.prepare(
-        "SELECT count(*), coalesce(sum(content_sha256 = ?2), 0) FROM vessels WHERE name = ?1");
-    st.bind(1, file->vessel.name).bind(2, file->vessel.content_sha256);
-    st.step();
-    if (st.column_int(0) > 0 && st.column_int(1) == 0) changed.push_back(file->vessel.name);
+    if (file != nullptr && recorded_ship_file(db, file->vessel) == RecordedShipFile::kAnotherFile) {
+      changed.push_back(file->vessel.name);
+    }
   }
   return changed;
 }
@@ -210,7 +210,8 @@ CalculatedMeanTension calculated_mean_tension(const DatabaseBasis& basis, const 
   CalculatedMeanTension out;
   out.breakdown = sweep::calculated_mean_tension(tow, speed_kt, wind_kt, heading_deg, rs_n, m);
   out.total_lbf = units::n_to_lbf(out.breakdown.total_n);
-  if (!database_has_ship_file(db_path, tow)) {
+  store::Database db = store::Database::open(db_path, store::Database::Mode::kReadOnly);
+  if (recorded_ship_file(db, tow) != RecordedShipFile::kThisFile) {
     out.ship_file_note = "the ship file of " + tow.name + " (" + tow.source_path +
                          ") is not the one the database was built with; the calculated mean tension differs from "
                          "the database's own";
