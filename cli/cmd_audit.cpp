@@ -245,20 +245,35 @@ int run_audit_command(const Context& ctx, const AuditArgs& a) {
   if (!a.plot.empty()) check_output_file("--plot", a.plot);
   if (!a.no_store) require_writable(a.db);
   const DatabaseSpan span = read_database_span(a.db);
-  const BasisLookup basis = read_database_basis(a.db);
+  const io::ShipCatalog catalog = load_catalog(ctx);
+  const BasisLookup basis = read_database_basis(a.db, &catalog);
   if (!basis.basis) {
     // Said on stderr in every output mode: such an audit asks other questions than the calculated basis would.
     std::cerr << "towdb audit: warning: the questions' mean tensions are drawn uniformly in the stored span, not at "
                  "the calculated mean tension: "
               << basis.reason << "\n";
   }
-  const io::ShipCatalog catalog = load_catalog(ctx);
   AuditOptions o;
   o.draws = a.draws;
   o.seed = a.seed;
   o.days = a.days > 0 ? a.days : span.days;
   o.threads = a.threads;
   const auto start = std::chrono::steady_clock::now();
+  // Ship files edited since the build: the direct simulations use the files, the stored cases did not.
+  std::vector<std::string> names;
+  for (const GroupSpan& g : span.groups) {
+    for (const std::string& n : {g.tug, g.tow}) {
+      if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+    }
+  }
+  const std::vector<std::string> changed_ships = vessels_changed_since_build(a.db, catalog, names);
+  if (!changed_ships.empty()) {
+    std::string list;
+    for (const std::string& n : changed_ships) list += (list.empty() ? "" : ", ") + n;
+    std::cerr << "towdb audit: warning: the ship files of " << list
+              << " are not the ones the database was built with: the direct simulations use the files as they are "
+                 "now, so the errors include the change\n";
+  }
   const std::vector<AuditQuestion> questions = draw_questions(span, basis.basis, catalog, a.db, o);
   const std::vector<AuditOutcome> outcomes = run_audit(a.db, catalog, questions, o);
   const AuditSummary s = summarise(outcomes);
@@ -268,6 +283,7 @@ int run_audit_command(const Context& ctx, const AuditArgs& a) {
   const std::string mean_text = basis.basis ? "calculated, " + basis_text(*basis.basis)
                                             : "uniform in the stored span (no calculated basis: " + basis.reason + ")";
   ordered_json summary = summary_json(s, o, method);
+  summary["ship_files_changed_since_build"] = changed_ships;
   if (!a.plot.empty()) write_audit_plot(a.plot, outcomes);
   if (a.json) {
     ordered_json j;

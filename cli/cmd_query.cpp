@@ -11,6 +11,7 @@
 //   towdb query --db F --batch [--json]     CSV queries on stdin, header = flag names
 //   towdb query --db F --leave-one-out      interpolation error of the database
 //   towdb max-speed / min-length            the same flags without --speed-kt / --length-ft
+//                                           and --extrapolate (a search never extrapolates)
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -691,7 +692,9 @@ void add_common_options(CLI::App* c, QueryArgs& a, bool speed, bool length) {
                 "Exceedance probability of the tow's maximum dynamic tension (default 0.001)")
       ->check(number_in(0.0, 1.0, true, true));
   c->add_option("--tow-days", a.tow_days, "Tow duration [days] (default 1)")->check(number_in(1.0, 1e6, false, false));
-  c->add_flag("--extrapolate", a.extrapolate, "Extrapolate outside the stored data (with warnings)");
+  if (speed && length) {  // a search never extrapolates (query.h)
+    c->add_flag("--extrapolate", a.extrapolate, "Extrapolate outside the stored data (with warnings)");
+  }
   c->add_flag("--brake", a.brake, "Towline held on the brake: mean tension limit BS/5 instead of BS/3");
   c->add_option("--space", a.space, "Interpolation space of the Gumbel parameters (default: chosen by leave-one-out)")
       ->check(CLI::IsMember({"auto", "linear", "log"}));

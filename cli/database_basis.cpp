@@ -1,5 +1,7 @@
 #include "database_basis.hpp"
 
+#include <cmath>
+#include <optional>
 #include <vector>
 
 #include "common/error.hpp"
@@ -66,13 +68,57 @@ BasisLookup basis_of_sweep(const sweep::SweepFile& file, const std::string& sour
   return {DatabaseBasis{*found, source}, ""};
 }
 
-// Whether the database's vessels table holds this exact ship file.
-bool database_has_ship_file(const std::filesystem::path& db_path, const model::Vessel& v) {
-  store::Database db = store::Database::open(db_path, store::Database::Mode::kReadOnly);
-  store::Statement st = db.prepare("SELECT count(*) FROM vessels WHERE name = ? AND content_sha256 = ?");
+// What the database's vessels table records of this vessel's ship file.
+enum class RecordedShipFile { kThisFile, kAnotherFile, kNone };
+
+RecordedShipFile recorded_ship_file(store::Database& db, const model::Vessel& v) {
+  store::Statement st =
+      db.prepare("SELECT count(*), coalesce(sum(content_sha256 = ?2), 0) FROM vessels WHERE name = ?1");
   st.bind(1, v.name).bind(2, v.content_sha256);
   st.step();
-  return st.column_int(0) > 0;
+  if (st.column_int(1) > 0) return RecordedShipFile::kThisFile;
+  return st.column_int(0) > 0 ? RecordedShipFile::kAnotherFile : RecordedShipFile::kNone;
+}
+
+// A stored case's calculated mean tension and the inputs it was computed at
+// (EQ-SWEEP-1: the node's own tow, speed, wind and heading).
+struct StoredCalculated {
+  std::int64_t case_id = 0;
+  std::string tow;
+  double speed_kt = 0.0, wind_kt = 0.0, heading_deg = 0.0, calculated_lbf = 0.0;
+};
+
+std::optional<StoredCalculated> first_stored_calculated(const std::filesystem::path& db_path) {
+  store::Database db = store::Database::open(db_path, store::Database::Mode::kReadOnly);
+  store::Statement st = db.prepare(
+      "SELECT case_id, tow_name, speed_kt, wind_kt, heading_deg, calculated_mean_tension_lbf FROM cases "
+      "WHERE status = 'done' AND calculated_mean_tension_lbf IS NOT NULL AND wind_kt IS NOT NULL "
+      "AND (nominal_speed_kt IS NULL OR nominal_speed_kt = speed_kt) ORDER BY case_id LIMIT 1");
+  if (!st.step()) return std::nullopt;
+  return StoredCalculated{st.column_int(0),    st.column_text(1),   st.column_double(2),
+                          st.column_double(3), st.column_double(4), st.column_double(5)};
+}
+
+// The same formula and inputs as the build (sweep_file.cpp grid_speed): only
+// the last bits may differ, from the order of the strip theory's sums.
+constexpr double kBasisCheckRelTol = 1e-9;
+
+// A sweep file whose bytes changed since the build (a comment, say) is still
+// the database's basis when its model reproduces a calculated mean tension
+// the database stores (which also checks the tow's ship file where it counts:
+// its resistance); empty when it does, else why not.
+std::string check_basis_against_store(const DatabaseBasis& basis, const io::ShipCatalog& catalog,
+                                      const std::filesystem::path& db_path) {
+  const std::optional<StoredCalculated> c = first_stored_calculated(db_path);
+  if (!c) return "the database stores no calculated mean tension to check it against";
+  if (catalog.find_vessel(c->tow) == nullptr) return "the ships hold no " + c->tow + " to check it with";
+  const double lbf =
+      calculated_mean_tension(basis, catalog, db_path, c->tow, c->speed_kt, c->wind_kt, c->heading_deg).total_lbf;
+  if (std::abs(lbf - c->calculated_lbf) > kBasisCheckRelTol * c->calculated_lbf) {
+    return "its model gives " + format_value(lbf) + " lbf where case " + std::to_string(c->case_id) + " stores " +
+           format_value(c->calculated_lbf) + " lbf";
+  }
+  return "";
 }
 
 }  // namespace
@@ -101,11 +147,11 @@ simulation::CaseOptions build_case_options() {
   return o;
 }
 
-BasisLookup read_database_basis(const std::filesystem::path& db_path) {
+BasisLookup read_database_basis(const std::filesystem::path& db_path, const io::ShipCatalog* catalog) {
   const std::optional<RecordedBuild> build = newest_completed_build(db_path);
   if (!build) return {std::nullopt, "the database records no completed build (table builds)"};
   const std::string which = "the sweep file " + build->sweep_file + " of build " + std::to_string(build->build_id);
-  bool changed = false;
+  std::string changed;  // why a file found is not the build's basis
   for (const auto& p : candidate_paths(db_path, build->sweep_file)) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(p, ec)) continue;
@@ -113,17 +159,38 @@ BasisLookup read_database_basis(const std::filesystem::path& db_path) {
     try {
       file = sweep::load_sweep(p);
     } catch (const InputError&) {
-      changed = true;  // no longer parses: not the file the build read
+      changed = " no longer parses";  // not the file the build read
       continue;
     }
-    if (file.sha256 != build->sweep_sha256) {
-      changed = true;
-      continue;
+    const std::string source = which + " (" + p.string() + ")";
+    if (file.sha256 == build->sweep_sha256) return basis_of_sweep(file, source);
+    changed = " has changed since the build (SHA-256 differs)";
+    if (catalog == nullptr) continue;
+    BasisLookup edited = basis_of_sweep(file, source + ", changed since the build");
+    if (!edited.basis) continue;
+    const std::string mismatch = check_basis_against_store(*edited.basis, *catalog, db_path);
+    if (mismatch.empty()) {
+      edited.basis->source += "; its model reproduces the calculated mean tensions the database stores";
+      return edited;
     }
-    return basis_of_sweep(file, which + " (" + p.string() + ")");
+    changed += ", and " + mismatch;
   }
-  return {std::nullopt, which + (changed ? " has changed since the build (SHA-256 differs)"
-                                         : " was not found (looked as written and above the database)")};
+  return {std::nullopt, which + (changed.empty() ? " was not found (looked as written and above the database)"
+                                                 : changed)};
+}
+
+std::vector<std::string> vessels_changed_since_build(const std::filesystem::path& db_path,
+                                                     const io::ShipCatalog& catalog,
+                                                     const std::vector<std::string>& names) {
+  store::Database db = store::Database::open(db_path, store::Database::Mode::kReadOnly);
+  std::vector<std::string> changed;
+  for (const std::string& name : names) {
+    const io::VesselFile* file = catalog.find_vessel(name);
+    if (file != nullptr && recorded_ship_file(db, file->vessel) == RecordedShipFile::kAnotherFile) {
+      changed.push_back(file->vessel.name);
+    }
+  }
+  return changed;
 }
 
 CalculatedMeanTension calculated_mean_tension(const DatabaseBasis& basis, const io::ShipCatalog& catalog,
@@ -143,7 +210,8 @@ CalculatedMeanTension calculated_mean_tension(const DatabaseBasis& basis, const 
   CalculatedMeanTension out;
   out.breakdown = sweep::calculated_mean_tension(tow, speed_kt, wind_kt, heading_deg, rs_n, m);
   out.total_lbf = units::n_to_lbf(out.breakdown.total_n);
-  if (!database_has_ship_file(db_path, tow)) {
+  store::Database db = store::Database::open(db_path, store::Database::Mode::kReadOnly);
+  if (recorded_ship_file(db, tow) != RecordedShipFile::kThisFile) {
     out.ship_file_note = "the ship file of " + tow.name + " (" + tow.source_path +
                          ") is not the one the database was built with; the calculated mean tension differs from "
                          "the database's own";

@@ -12,7 +12,9 @@
 // Where the basis comes from (schema/README.md, table `builds`): the newest
 // completed build's sweep file, found at its recorded path (as written, or
 // relative to any folder above the database) and only if its SHA-256 still
-// equals the recorded `builds.sweep_sha256`. All of that file's grids with a
+// equals the recorded `builds.sweep_sha256` or, with the ship catalog at hand,
+// its model reproduces a calculated mean tension the database stores (the
+// file edited since, e.g. a comment). All of that file's grids with a
 // "calculated" mean tension must agree on the model; otherwise the database
 // has no single basis and none is used.
 #ifndef TOWDB_CLI_DATABASE_BASIS_HPP
@@ -21,6 +23,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -46,8 +49,19 @@ struct BasisLookup {
 };
 
 // Reads the basis of the database at db_path (read-only). Never throws for a
-// missing or changed sweep file: that is a BasisLookup without a basis.
-BasisLookup read_database_basis(const std::filesystem::path& db_path);
+// missing or changed sweep file: that is a BasisLookup without a basis. With
+// a catalog, a sweep file whose bytes changed since the build (an edited
+// comment, say) is still the basis when its model reproduces the calculated
+// mean tension the database stores with its first such case (about 2 s of
+// strip theory).
+BasisLookup read_database_basis(const std::filesystem::path& db_path, const io::ShipCatalog* catalog = nullptr);
+
+// The vessels of `names` whose ship file in the catalog is not the one the
+// database was built with (its `vessels` table holds the name with another
+// content SHA-256); a name the table does not hold is not checked.
+std::vector<std::string> vessels_changed_since_build(const std::filesystem::path& db_path,
+                                                     const io::ShipCatalog& catalog,
+                                                     const std::vector<std::string>& names);
 
 // The calculated mean tension and its parts at the question's speed [kt],
 // wind [kt] and wave heading [deg] (EQ-SWEEP-1 as the sweep evaluates it).

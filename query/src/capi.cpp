@@ -137,6 +137,7 @@ int run_search(towdb_query_db* db, const towdb_query_request* request, towdb_que
       std::memset(at_value, 0, sizeof *at_value);
       if (s.found) {
         (speed ? q.speed_kt : q.length_ft) = s.value;
+        q.extrapolate = false;  // as the search answered it: never extrapolated (query.h)
         Answer a = db->engine->query(q);
         to_result(a, at_value);
         db->tug = a.tug;

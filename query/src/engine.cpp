@@ -442,6 +442,7 @@ struct Corner {
   double weight;
   std::array<int, kGridAxes> idx;
   NodeValue value;
+  double profile_factor;  // sigma(x_q) / sigma(x_c) of the EQ-QUERY-11/12 moves applied (1: none)
 };
 
 struct Evaluation {
@@ -470,6 +471,10 @@ struct MeanTarget {
   // evaluations; NaN: leave them at the stored heading).
   double heading_deg = kNaN;
   double speed_kt = kNaN;  // EQ-QUERY-12: the same along speed
+  // EQ-QUERY-7's pinned evaluations: false where the question's own evaluation
+  // could not move along that axis (a corner without a profile), so that the
+  // estimate differences values of one kind, never moved against unmoved ones.
+  bool move_heading = true, move_speed = true;
 };
 
 // EQ-QUERY-11/12: moves each corner's value from its node's coordinate x_c
@@ -500,6 +505,7 @@ bool shift_along(const Group& g, int axis, double xq, int MeanPoint::*slot, cons
     };
     const double shift = v.p0 == v.p1 ? shift_of(v.p0) : (1.0 - v.t) * shift_of(v.p0) + v.t * shift_of(v.p1);
     const double f = std::exp(shift);
+    c.profile_factor *= f;
     if (s == Space::kLog) {
       v.g_u += shift;
       v.g_beta += shift;
@@ -549,6 +555,7 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
       w *= hi ? br[a].t : 1.0 - br[a].t;
     }
     c.weight = w;
+    c.profile_factor = 1.0;
     if (w == 0.0) continue;
     const int node = g.node_index(c.idx);
     if (node < 0) {
@@ -594,10 +601,10 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
   }
   const double hq = cell_coordinate(g, br, kHeading, target.heading_deg);
   const double vq = cell_coordinate(g, br, kSpeed, target.speed_kt);
-  ev->heading_profiled =
-      std::isfinite(hq) && shift_along(g, kHeading, hq, &MeanPoint::profile, g.profiles, s, ev, n_corners);
-  ev->speed_profiled =
-      std::isfinite(vq) && shift_along(g, kSpeed, vq, &MeanPoint::speed_profile, g.speed_profiles, s, ev, n_corners);
+  ev->heading_profiled = target.move_heading && std::isfinite(hq) &&
+                         shift_along(g, kHeading, hq, &MeanPoint::profile, g.profiles, s, ev, n_corners);
+  ev->speed_profiled = target.move_speed && std::isfinite(vq) &&
+                       shift_along(g, kSpeed, vq, &MeanPoint::speed_profile, g.speed_profiles, s, ev, n_corners);
   double gu = 0.0, gb = 0.0, g_lo = 0.0, g_hi = 0.0;
   ev->mean_lbf = ev->slack = ev->sag_ft = ev->lowest_ft = ev->ci_low = ev->ci_high = 0.0;
   ev->bs_min = std::numeric_limits<double>::infinity();
@@ -626,17 +633,21 @@ void evaluate(const Group& g, const Brackets& br, const MeanTarget& target, Spac
     ev->mean_extrapolated = ev->mean_extrapolated || v.mean_extrapolated;
     single = &c;
   }
-  if (present == 1 && single->weight == 1.0) {
-    // At a stored node: the stored values, bit for bit (no log/exp round trip).
+  const bool at_node = present == 1 && single->weight == 1.0;
+  const bool at_stored_case = at_node && single->value.p0 == single->value.p1;
+  if (at_node) {
+    // At a stored node: the node's values (at a stored case, bit for bit: no log/exp round trip).
     ev->u = node_u(single->value, s);
     ev->beta = node_beta(single->value, s);
     ev->mean_lbf = single->value.mean_lbf;
   } else {
     ev->u = from_space(gu, s);
     ev->beta = from_space(gb, s);
+  }
+  if (!at_stored_case) {
     // The stored interval in the answer's space, so that it brackets the
     // answer as the corners' intervals bracket theirs (linear where a bound
-    // is not positive).
+    // is not positive); also at a node between its stored mean tensions.
     const double lo = from_space(g_lo, s), hi = from_space(g_hi, s);
     if (std::isfinite(lo) && std::isfinite(hi)) {
       ev->ci_low = lo;
@@ -693,28 +704,32 @@ constexpr double kChordSagFloor = 0.5;
 // EQ-QUERY-7 along one axis of stored values x(0..n-1), the query in the
 // cell [i0, i1] at fraction t; f(i) is the interpolated quantity with this
 // axis pinned to index i (NaN: not available). The chord estimate
-// t (1 - t) |f(i1) - f(i0)| counts in full with two values and with weight
-// chord_floor otherwise; the curvature estimate of each side that has a third
-// value can only raise it.
+// t (1 - t) |f(i1) - f(i0)| counts in full where no third value is available
+// (an axis of two values, or neighbours that cannot be evaluated at the
+// question: a missing node, a mean tension outside a node's stored ones) and
+// with weight chord_floor otherwise; the curvature estimate of each side that
+// has a third value can only raise it.
 template <class X, class F>
 double axis_error(int n, int i0, int i1, double t, double chord_floor, const X& x, const F& f) {
   const double f0 = f(i0), f1 = f(i1);
   if (!(std::isfinite(f0) && std::isfinite(f1))) return 0.0;  // ln of a non-positive corner value
   const double tt = std::abs(t * (1.0 - t)), h = x(i1) - x(i0);
-  double e = (n == 2 ? 1.0 : chord_floor) * tt * std::abs(f1 - f0);
+  const double chord = tt * std::abs(f1 - f0);
+  double curvature = kNaN;  // the larger side's estimate; NaN: no third value
   if (i0 - 1 >= 0) {
     const double fl = f(i0 - 1);
     if (std::isfinite(fl)) {
-      e = std::max(e, tt * h * h * std::abs(divided_difference2(x(i0 - 1), fl, x(i0), f0, x(i1), f1)));
+      curvature = tt * h * h * std::abs(divided_difference2(x(i0 - 1), fl, x(i0), f0, x(i1), f1));
     }
   }
   if (i1 + 1 < n) {
     const double fr = f(i1 + 1);
     if (std::isfinite(fr)) {
-      e = std::max(e, tt * h * h * std::abs(divided_difference2(x(i0), f0, x(i1), f1, x(i1 + 1), fr)));
+      const double right = tt * h * h * std::abs(divided_difference2(x(i0), f0, x(i1), f1, x(i1 + 1), fr));
+      curvature = std::isnan(curvature) ? right : std::max(curvature, right);
     }
   }
-  return e;
+  return std::isnan(curvature) ? chord : std::max(chord_floor * chord, curvature);
 }
 
 double interpolation_error_kips(const Group& g, const Brackets& br, const Evaluation& ev, const MeanTarget& target,
@@ -732,6 +747,8 @@ double interpolation_error_kips(const Group& g, const Brackets& br, const Evalua
     // too: the estimate then measures how x / sigma changes between the
     // stored values (a value that could not be moved is not available).
     MeanTarget at = target;
+    at.move_heading = ev.heading_profiled;
+    at.move_speed = ev.speed_profiled;
     const bool moved = (a == kHeading && ev.heading_profiled) || (a == kSpeed && ev.speed_profiled);
     const double xq = (1.0 - br[a].t) * ax[br[a].i0] + br[a].t * ax[br[a].i1];
     if (moved && a == kHeading) at.heading_deg = xq;
@@ -753,7 +770,9 @@ double interpolation_error_kips(const Group& g, const Brackets& br, const Evalua
     err += scale * axis_error(static_cast<int>(ax.size()), br[a].i0, br[a].i1, br[a].t, kChordSagFloor,
                               [&](int i) { return ax[i]; }, f_at);
   }
-  // Each corner's own mean tensions (no chord floor: it was calibrated on the grid axes; docs/audit.md).
+  // Each corner's own mean tensions (no chord floor: it was calibrated on the grid axes; docs/audit.md),
+  // moved as the corner was (EQ-QUERY-11/12): in linear space its values scale by the profile factor, in
+  // log space their differences do not change.
   const int n_corners = 1 << ev.active_count;
   for (int mask = 0; mask < n_corners; ++mask) {
     const Corner& cn = ev.corners[mask];
@@ -762,7 +781,7 @@ double interpolation_error_kips(const Group& g, const Brackets& br, const Evalua
     const double e_mean = axis_error(
         static_cast<int>(pts.size()), cn.value.p0, cn.value.p1, cn.value.t, 0.0,
         [&](int i) { return pts[i].mean_lbf; }, [&](int i) { return g_of(pts[i].u_kips + pts[i].beta_kips * c); });
-    err += scale * std::abs(cn.weight) * e_mean;
+    err += scale * std::abs(cn.weight) * (log_space ? 1.0 : cn.profile_factor) * e_mean;
   }
   return err;
 }
@@ -1815,8 +1834,13 @@ SearchResult Engine::search(const Request& request, int axis, bool maximise) con
   Request base = request;
   double& field = axis == kSpeed ? base.speed_kt : base.length_ft;
   const std::string name = axis == kSpeed ? "speed_kt" : "length_ft";
-  if (std::isnan(field)) field = 1.0;  // placeholder: validated below, then overwritten
+  field = 1.0;  // the searched field is ignored (query.h): a placeholder, validated below, then overwritten
+  base.extrapolate = false;  // a search never extrapolates (query.h)
   base.validate();
+  // A sea given as Hs is searched as query() answers it (EQ-QUERY-10): resolved
+  // once here, not again at every evaluation.
+  double wind_from_hs_kt = kNaN;
+  base = resolve_sea(base, &wind_from_hs_kt);
   const Group& g = find_group(base);
   const auto& ax = g.axis[axis];
   SearchResult res;
@@ -1831,8 +1855,19 @@ SearchResult Engine::search(const Request& request, int axis, bool maximise) con
   }
   xs.push_back(ax.back());
 
+  // The first failure, re-raised as its own kind when no value can be evaluated.
+  enum class FailureKind { kInput, kRange, kNumerical };
   std::string first_failure;
+  FailureKind first_kind = FailureKind::kInput;
   int failures = 0;
+  auto fail = [&](const std::exception& e, FailureKind kind) {
+    if (first_failure.empty()) {
+      first_failure = e.what();
+      first_kind = kind;
+    }
+    ++failures;
+    return -1;
+  };
   // 1: passes both checks; 0: fails one; -1: cannot be evaluated (outside the data there).
   // Passing also needs a mean tension the tugs can hold (options_.tug_capacity_lbf,
   // thesis ch. 5, the sweep's EQ-SWEEP-3 limit): with the calculated mean
@@ -1846,14 +1881,14 @@ SearchResult Engine::search(const Request& request, int axis, bool maximise) con
       const bool holdable = a.mean_tension_lbf <= options_.tug_capacity_lbf;
       if (!holdable && std::isnan(above_capacity_lbf)) above_capacity_lbf = a.mean_tension_lbf;
       return a.extreme_check_passed && a.mean_check_passed && holdable ? 1 : 0;
+    } catch (const DatabaseError&) {
+      throw;  // the database itself, not these conditions
+    } catch (const OutOfRangeError& e) {
+      return fail(e, FailureKind::kRange);
     } catch (const InputError& e) {
-      if (first_failure.empty()) first_failure = e.what();
-      ++failures;
-      return -1;
+      return fail(e, FailureKind::kInput);
     } catch (const NumericalError& e) {
-      if (first_failure.empty()) first_failure = e.what();
-      ++failures;
-      return -1;
+      return fail(e, FailureKind::kNumerical);
     }
   };
   const int n = static_cast<int>(xs.size());
@@ -1890,8 +1925,12 @@ SearchResult Engine::search(const Request& request, int axis, bool maximise) con
   if (failures == res.evaluations) {
     // Not one value could be evaluated: the conditions themselves are outside
     // the stored data (as query() would say), not "no value passes".
-    throw InputError("no " + name + " in the stored range " + format_value(res.range_low) + " to " +
-                     format_value(res.range_high) + " can be evaluated for these conditions; first: " + first_failure);
+    const std::string why = "no " + name + " in the stored range " + format_value(res.range_low) + " to " +
+                            format_value(res.range_high) + " can be evaluated for these conditions; first: " +
+                            first_failure;
+    if (first_kind == FailureKind::kRange) throw OutOfRangeError(why);
+    if (first_kind == FailureKind::kNumerical) throw NumericalError(why);
+    throw InputError(why);
   }
   if (!std::isnan(above_capacity_lbf)) {
     res.warnings.push_back({WarningKind::kAboveCapacity,

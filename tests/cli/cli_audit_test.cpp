@@ -15,6 +15,9 @@
 //                database records no basis or the sweep file changed
 //   cli-audit-7  audit draws the calculated mean tension when the database has a basis
 //   cli-audit-8  the query's default mean tension comes from the nodes' stored T_calc (query.h EQ-QUERY-9)
+//   cli-audit-9  a sweep file edited since the build (a comment) is still the audit's basis when its model
+//                reproduces the calculated mean tension the database stores; a changed model is not
+//   cli-audit-10 a ship file edited since the build is named (stderr and the summary)
 //
 // The databases are synthetic (tests/query/synthetic_db.hpp) and the direct
 // simulations 3 days long: the errors mean nothing here, only the bookkeeping.
@@ -261,6 +264,24 @@ TEST_F(CliAudit, ReadOnlyDatabaseIsRefusedBeforeAnyWork) {  // cli-audit-5
   chmod(db_.c_str(), 0644);
 }
 
+TEST_F(CliAudit, ShipFilesEditedSinceTheBuildAreNamed) {  // cli-audit-10
+  // The synthetic database records no ship files: nothing to compare, nothing named.
+  const CommandResult plain = run_towdb(audit(db_, "--draws 1 --json --no-store"));
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_TRUE(json::parse(plain.out).at("summary").at("ship_files_changed_since_build").empty());
+  // The LHA 1 recorded with another file's hash: the ships/ file is not the one the build used.
+  {
+    auto db = store::Database::open(db_, store::Database::Mode::kReadWrite);
+    db.exec("INSERT INTO vessels (name, role, file_path, content_sha256, file_text) "
+            "VALUES ('LHA 1', 'tow', 'ships/lha-1.toml', 'another-hash', '')");
+  }
+  const CommandResult r = run_towdb(audit(db_, "--draws 1 --json --no-store"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out).at("summary").at("ship_files_changed_since_build"), json::array({"LHA 1"}));
+  EXPECT_NE(r.err.find("the ship files of LHA 1 are not the ones the database was built with"), std::string::npos)
+      << r.err;
+}
+
 class CliQueryDefaultMean : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -376,6 +397,35 @@ TEST_F(CliQueryDefaultMean, AuditDrawsTheCalculatedMeanTension) {  // cli-audit-
     EXPECT_REL_CLOSE(q.at("mean_tension_lbf").get<double>(), json::parse(m.out).at("total_lbf").get<double>(),
                      kSameCodeRelTol);
   }
+}
+
+TEST_F(CliQueryDefaultMean, AnEditedSweepFileIsStillTheBasisIfItReproducesTheStore) {  // cli-audit-9
+  // The first case (LHA 1, 5 kt, 20 kt) stores the calculated mean tension of the sweep's basis, as a build
+  // records it (`towdb mean-tension` in head seas with strip-theory sea resistance).
+  std::vector<SyntheticCase> cases = group("LHA 1", 150000.0);
+  const double calculated_lbf = mean_tension_command_lbf();
+  for (SyntheticCase& c : cases) c.calculated_mean_tension_lbf = calculated_lbf;
+  const auto path = dir_ / "stores-calculated.towdb";
+  write_synthetic_db(path, cases);
+  record_build(path, sweep_);
+  const std::string audit = "audit --db '" + path.string() + "' --draws 1 --days 3 --json --no-store";
+
+  std::ofstream(sweep_, std::ios::app) << "# a comment added after the build\n";
+  const CommandResult edited = run_towdb(audit);
+  ASSERT_EQ(edited.exit_code, 0) << edited.err;
+  const json e = json::parse(edited.out);
+  EXPECT_EQ(e.at("summary").at("mean_tension"), "calculated") << edited.err;
+  EXPECT_NE(e.at("mean_tension_basis").at("source").get<std::string>().find("reproduces"), std::string::npos)
+      << e.at("mean_tension_basis").dump();
+
+  // Another hull margin is another model: its calculated tension is not the stored one.
+  std::string text = kSweepText;
+  text.replace(text.find("hull_margin = 0.10"), 18, "hull_margin = 0.25");
+  std::ofstream(sweep_, std::ios::trunc) << text;
+  const CommandResult other = run_towdb(audit);
+  ASSERT_EQ(other.exit_code, 0) << other.err;
+  EXPECT_EQ(json::parse(other.out).at("summary").at("mean_tension"), "uniform_in_stored_span");
+  EXPECT_NE(other.err.find("its model gives"), std::string::npos) << other.err;
 }
 
 }  // namespace

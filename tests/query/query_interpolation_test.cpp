@@ -25,10 +25,17 @@
 //                   a Tp far from that sea's refused naming both periods (EQ-QUERY-10)
 //   query-interp-18 heading profiles (EQ-QUERY-11): data equal to a smooth factor times a line's stored
 //                   profile are exact between stored headings, in log and linear space; a cell with a
-//                   corner without a profile is interpolated as before, never half corrected
+//                   corner without a profile is interpolated as before, never half corrected, and so is its
+//                   error estimate; the estimate along a corner's mean tensions moves with the corner
 //   query-interp-20 speed profiles (EQ-QUERY-12): data equal to a smooth factor times a line's stored speed
 //                   profile (a fold-like swing inside a 2 kt cell) are exact between stored speeds, alone and
 //                   with a heading profile; the error estimate along speed then vanishes
+//   query-interp-21 searches (EQ-QUERY-5): a sea given as Hs is searched at its equivalent wind; the searched
+//                   field is ignored whatever it holds; extrapolation is never used; a search where no value can
+//                   be evaluated is refused with the kind of its first failure (RANGE outside the stored winds)
+//   query-interp-22 EQ-QUERY-7: the full chord estimate along an axis of three or more values when no node beside
+//                   the cell can be evaluated at the question; the stored interval in log space at a node between
+//                   its stored mean tensions
 //   query-interp-19 a node's mean tensions (EQ-QUERY-6): the monotone cubic is close to a smooth function where
 //                   the chord is not, never overshoots a steep rise or a local maximum, and is the chord with two
 #include <algorithm>
@@ -529,16 +536,22 @@ TEST_F(QueryTest, IncompleteGridIsRefusedThenRenormalised) {
   EXPECT_EQ(node.values.extrapolated, 0);
 }
 
+// The searches' analytic data (query-interp-12, 21): dynamic_999(s, l) = 250 + 10 s - 0.1 l + 5 y_999 kips
+// at a mean tension of 70,000 lbf at every node.
+GridSpec crossing_grid() {
+  GridSpec g;
+  g.nominal_mean_lbf = [](double, double) { return 70000.0; };
+  g.u_kips = [](double s, double, double, double l, double) { return 250.0 + 10.0 * s - 0.1 * l; };
+  g.beta_kips = [](double, double, double, double, double) { return 5.0; };
+  return g;
+}
+
 // query-interp-12
 TEST_F(QueryTest, InverseQueriesFindTheAnalyticCrossing) {
   // EVIDENCE-OF: EQ-QUERY-5. dynamic_999(s, l) = 250 + 10 s - 0.1 l + 5 y_999
   // (y_999 = -ln(-ln 0.999)); with mean 70,000 lbf and BS 360,000 lbf the
   // extreme check is mean + 1000 x <= 240,000 lbf, i.e. x <= 170 kips.
-  GridSpec g;
-  g.nominal_mean_lbf = [](double, double) { return 70000.0; };
-  g.u_kips = [](double s, double, double, double l, double) { return 250.0 + 10.0 * s - 0.1 * l; };
-  g.beta_kips = [](double, double, double, double, double) { return 5.0; };
-  Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LINEAR);
+  Database db(write(grid_cases(crossing_grid())), TOWDB_QUERY_SPACE_LINEAR);
   const double y = reduced_variate_999();
   // Bisection to 1e-6 of the searched range (query.h).
   constexpr double kSpeedTol_kt = 1e-5, kLengthTol_ft = 1e-2;
@@ -867,6 +880,46 @@ TEST_F(QueryTest, HeadingProfilesMakeDataProportionalToThemExactBetweenHeadings)
   EXPECT_LT(free_heading.values.interpolation_error_kips, 1e-9 * free_heading.values.dynamic_999_kips);
   const QueryResult plain_heading = plain_db.query(request(5.0, 20.0, 84.4, 1000.0, m));
   EXPECT_GT(plain_heading.values.interpolation_error_kips, 0.1 * plain_heading.values.dynamic_999_kips);
+
+  // EQ-QUERY-7 with a corner without a profile: the question is interpolated as without profiles, and so is
+  // every pinned evaluation of its estimate (a pinned half of the cell whose corners all have profiles is
+  // not moved while the other half is not): the estimate is the one without profiles.
+  // 50,000 lbf: between the 5 kt node's first two mean tensions (42,000 lbf, the case without a profile, and
+  // at least 59,500) and inside the 7 kt node's 49,200-94,300.
+  const QueryResult holed_cell = holed_db.query(request(6.0, 20.0, 70.0, 1000.0, 50000.0));
+  const QueryResult plain_cell = plain_db.query(request(6.0, 20.0, 70.0, 1000.0, 50000.0));
+  EXPECT_REL_CLOSE(holed_cell.values.interpolation_error_kips, plain_cell.values.interpolation_error_kips,
+                   kRoundOffRelTol);
+
+  // EQ-QUERY-7 along a corner's mean tensions, in linear space: the corner's values moved along the profile
+  // scale by sigma(h_q) / sigma(h_c), and so does their estimate. Data P(h) L(s, w, l, m), L linear in m:
+  // only the mean tensions of the corners with two stored ones contribute (the chord estimate, P(h_c) e_L
+  // each), so between the heading nodes 75 and 90 deg the estimate is P(h_q) ((1 - t) e_75 / P(75) +
+  // t e_90 / P(90)), e_x the estimate at heading x.
+  int nonzero = 0;
+  for (double ws : {20.0, 30.0}) {
+    for (double ls : {1000.0, 2000.0}) {
+      const auto [m0, m1] = common_mean_range(lin, 5.0, ws);
+      const double mq = m0 + 0.37 * (m1 - m0);
+      const double e75 = lin_db.query(request(5.0, ws, 75.0, ls, mq)).values.interpolation_error_kips;
+      const double e90 = lin_db.query(request(5.0, ws, 90.0, ls, mq)).values.interpolation_error_kips;
+      // Round-off of exactly linear data (about 1e-14 kips): no estimate to scale.
+      const double noise_kips = 1e-9 * lin_db.query(request(5.0, ws, 75.0, ls, mq)).values.dynamic_999_kips;
+      const bool estimated = std::max(e75, e90) > noise_kips;
+      nonzero += estimated ? 1 : 0;
+      for (double hq : {78.0, 84.4, 88.0}) {
+        const double t = (hq - 75.0) / 15.0;
+        const double expected = profile_at(hq) * ((1.0 - t) * e75 / profile_at(75.0) + t * e90 / profile_at(90.0));
+        const QueryResult r = lin_db.query(request(5.0, ws, hq, ls, mq));
+        if (estimated) {
+          EXPECT_REL_CLOSE(r.values.interpolation_error_kips, expected, 1e-9) << ws << " " << ls << " " << hq;
+        } else {
+          EXPECT_LT(r.values.interpolation_error_kips, noise_kips) << ws << " " << ls << " " << hq;
+        }
+      }
+    }
+  }
+  EXPECT_GT(nonzero, 0);  // some corner has two stored mean tensions: the check is not 0 = 0
 }
 
 // query-interp-20
@@ -948,6 +1001,85 @@ TEST_F(QueryTest, SpeedProfilesMakeDataProportionalToThemExactBetweenSpeeds) {
     const QueryResult r = both_db.query(request(s, w, h, l, m2));
     EXPECT_REL_CLOSE(r.values.gumbel_u_kips, both.u_kips(s, w, h, l, m2), kRoundOffRelTol) << s << " " << h;
   }
+}
+
+// query-interp-21
+TEST_F(QueryTest, SearchesResolveTheSeaIgnoreTheirFieldAndNeverExtrapolate) {
+  // EVIDENCE-OF: query.h towdb_query_max_speed ("request->speed_kt ignored ... Extrapolation is never used by a
+  // search") with EQ-QUERY-10 (a sea given as Hs answered at the equivalent wind). Same analytic data as
+  // query-interp-12: the crossing at (170 - 250 + 0.1 l - 5 y_999) / 10 kt.
+  Database db(write(grid_cases(crossing_grid())), TOWDB_QUERY_SPACE_LINEAR);
+  const auto by_wind = db.max_speed(request(kNoValue, 30.0, 60.0, 1800.0, 70000.0));
+  ASSERT_EQ(by_wind.search.found, 1);
+
+  // Hs of the fully developed 30 kt sea (EQ-SEA-1, as query-interp-17): the same speed.
+  const double u_m_s = 30.0 * kMetersPerSecondPerKnot;
+  QueryRequest rq = request(kNoValue, kNoValue, 60.0, 1800.0, 70000.0);
+  rq.values.hs_ft = 0.2092 * u_m_s * u_m_s / kGravity_m_s2 / kMetersPerFoot;
+  const auto by_hs = db.max_speed(rq);
+  ASSERT_EQ(by_hs.search.found, 1);
+  EXPECT_REL_CLOSE(by_hs.search.value, by_wind.search.value, 1e-9);
+  EXPECT_NEAR(by_hs.at_value.values.equivalent_wind_kt, 30.0, 1e-9);
+
+  // The searched field is ignored whatever it holds: 0 (a zero-initialised C request) or a negative length.
+  const auto zero_speed = db.max_speed(request(0.0, 30.0, 60.0, 1800.0, 70000.0));
+  EXPECT_EQ(zero_speed.search.value, by_wind.search.value);
+  const auto negative_length = db.min_length(request(6.0, 30.0, 60.0, -1.0, 70000.0));
+  const auto nan_length = db.min_length(request(6.0, 30.0, 60.0, kNoValue, 70000.0));
+  ASSERT_EQ(nan_length.search.found, 1);
+  EXPECT_EQ(negative_length.search.value, nan_length.search.value);
+
+  // Extrapolation is never used: asked for, the search answers as without it; beyond the stored winds (35 kt)
+  // no speed can be evaluated, and the refusal is a RANGE one, as the query's own would be.
+  QueryRequest extrapolating = request(kNoValue, 30.0, 60.0, 1800.0, 70000.0);
+  extrapolating.values.extrapolate = 1;
+  EXPECT_EQ(db.max_speed(extrapolating).search.value, by_wind.search.value);
+  extrapolating.values.wind_kt = 37.0;
+  try {
+    (void)db.max_speed(extrapolating);
+    ADD_FAILURE() << "a search beyond the stored winds was answered";
+  } catch (const QueryError& e) {
+    EXPECT_EQ(e.code(), TOWDB_QUERY_RANGE) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no speed_kt in the stored range 3 to 9"), std::string::npos) << e.what();
+  }
+}
+
+// query-interp-22
+TEST_F(QueryTest, ErrorEstimateWithoutNeighboursAndTheIntervalAtANode) {
+  // EVIDENCE-OF: EQ-QUERY-7 (with no curvature to measure, the chord estimate t (1 - t) |f(x_i+1) - f(x_i)|
+  // in full). Speeds 3, 5, 7, 9 kt; the node mean tensions span [0.6, 1.15] x (30,000 + 6,000 s + 500 w) lbf,
+  // so 90,000 lbf at 30 kt is stored around 7 and 9 kt (52,200-100,050 and 59,400-113,850 lbf) but not at 5 kt
+  // (45,000-86,250): along speed, the cell 7-9 kt has no evaluable neighbour. u = 10 + 2 s: at 8 kt the chord's
+  // estimate is 0.5 x 0.5 x |u(9) - u(7)| = 1 kip; every other axis is at a node, and u does not depend on m.
+  GridSpec g;
+  g.u_kips = [](double s, double, double, double, double) { return 10.0 + 2.0 * s; };
+  g.beta_kips = [](double, double, double, double, double) { return 5.0; };
+  Database db(write(grid_cases(g)), TOWDB_QUERY_SPACE_LINEAR);
+  const QueryResult r = db.query(request(8.0, 30.0, 60.0, 1500.0, 90000.0));
+  EXPECT_REL_CLOSE(r.values.interpolation_error_kips, 0.25 * 4.0, 1e-9);
+  // With the neighbour evaluable (80,000 lbf is stored at 5 kt too) the floor of half the chord applies.
+  const QueryResult inside = db.query(request(8.0, 30.0, 60.0, 1500.0, 80000.0));
+  EXPECT_REL_CLOSE(inside.values.interpolation_error_kips, 0.5 * 0.25 * 4.0, 1e-9);
+
+  // EQ-QUERY-6: the stored interval in the answer's space, also at a grid node between its stored mean
+  // tensions. u and beta share their exponent, each case's interval is +/-5 % of its dynamic_999: in log space
+  // the interval is exactly 0.95 and 1.05 of the answer (a linear chord of the bounds is not).
+  GridSpec e;
+  e.u_kips = [](double s, double w, double, double, double m) { return 40.0 * std::exp(0.1 * s + 0.02 * w + 2e-5 * m); };
+  e.beta_kips = [](double s, double w, double, double, double m) { return 8.0 * std::exp(0.1 * s + 0.02 * w + 2e-5 * m); };
+  const auto cases = grid_cases(e);
+  Database log_db(write(cases, "exp.towdb"), TOWDB_QUERY_SPACE_LOG);
+  int checked = 0;
+  for (double s : e.speeds_kt) {
+    const double nominal = e.nominal_mean_lbf(s, 30.0);
+    for (double f : {0.7, 0.9, 1.1}) {
+      const QueryResult v = log_db.query(request(s, 30.0, 60.0, 1500.0, f * nominal));
+      EXPECT_REL_CLOSE(v.values.ci_low_kips, 0.95 * v.values.dynamic_999_kips, kRoundOffRelTol) << s << " " << f;
+      EXPECT_REL_CLOSE(v.values.ci_high_kips, 1.05 * v.values.dynamic_999_kips, kRoundOffRelTol) << s << " " << f;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 12);
 }
 
 // query-interp-19

@@ -63,7 +63,9 @@
  *             f''/2 taken as the second divided difference of x(p, D) over
  *             the cell's two nodes and the next node outside the cell (the
  *             larger of the two sides where both exist). Along an axis (or a
- *             node's mean tensions) with only the cell's two values there is
+ *             node's mean tensions) with only the cell's two values, or where
+ *             no node beside the cell can be evaluated at the question (not
+ *             stored, or the mean tension outside the ones it stores), there is
  *             no curvature to measure, and
  *               e_a = t_a (1 - t_a) |f(x_{i+1}) - f(x_i)|,
  *             the error of a chord under a curve that sags by a quarter of its
