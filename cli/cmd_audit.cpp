@@ -24,6 +24,7 @@
 #include "output.hpp"
 #include "plot.hpp"
 #include "store/database.hpp"
+#include "sweep/build/status.hpp"
 #include "sweep/build/writer.hpp"
 
 namespace towdb::cli {
@@ -274,6 +275,8 @@ int run_audit_command(const Context& ctx, const AuditArgs& a) {
               << " are not the ones the database was built with: the direct simulations use the files as they are "
                  "now, so the errors include the change\n";
   }
+  // What the audit measures: the stored content as of this build (towdb status compares it).
+  const sweep::StatusReport content = sweep::read_status(a.db, 1, 0);
   const std::vector<AuditQuestion> questions = draw_questions(span, basis.basis, catalog, a.db, o);
   const std::vector<AuditOutcome> outcomes = run_audit(a.db, catalog, questions, o);
   const AuditSummary s = summarise(outcomes);
@@ -284,6 +287,8 @@ int run_audit_command(const Context& ctx, const AuditArgs& a) {
                                             : "uniform in the stored span (no calculated basis: " + basis.reason + ")";
   ordered_json summary = summary_json(s, o, method);
   summary["ship_files_changed_since_build"] = changed_ships;
+  summary["content_build_id"] = content.content_build_id ? ordered_json(*content.content_build_id) : ordered_json();
+  summary["cases_done"] = content.cases_by_status.at("done");
   if (!a.plot.empty()) write_audit_plot(a.plot, outcomes);
   if (a.json) {
     ordered_json j;

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -244,6 +245,27 @@ ordered_json last_audit_json(const sweep::StatusReport& r) {
 
 std::string percent_or_dash(const ordered_json& v) { return v.is_number() ? fmt(100.0 * v.get<double>(), 1) + " %" : "-"; }
 
+// Whether the last audit measured what the database holds now: the audit records the newest
+// build that had computed a stored case or profile (content_build_id); a later build that
+// computed more makes the audit describe a database that no longer exists.
+std::string audit_staleness(const ordered_json& audit, const sweep::StatusReport& r) {
+  if (!audit.contains("content_build_id")) {
+    return "audited content: not recorded (an audit made before towdb recorded it): run towdb audit again";
+  }
+  const ordered_json& id = audit.at("content_build_id");
+  const std::optional<std::int64_t> audited =
+      id.is_number_integer() ? std::optional<std::int64_t>(id.get<std::int64_t>()) : std::nullopt;
+  const auto name = [](const std::optional<std::int64_t>& b) {
+    return b ? "build " + std::to_string(*b) : std::string("no recorded build");
+  };
+  const std::string cases = std::to_string(audit.value("cases_done", std::int64_t{0})) + " cases done";
+  if (audited != r.content_build_id) {
+    return "warning: the audit measured the database as of " + name(audited) + " (" + cases + "); " +
+           name(r.content_build_id) + " has computed cases or profiles since: run towdb audit again";
+  }
+  return "audited content: " + name(audited) + " (" + cases + "), the database as it is";
+}
+
 // The stored summary of the last `towdb audit`: how far to trust the answers.
 void print_last_audit(const sweep::StatusReport& r) {
   const ordered_json a = last_audit_json(r);
@@ -256,6 +278,7 @@ void print_last_audit(const sweep::StatusReport& r) {
   const ordered_json& c = a.value("uncertainty_covers_error", ordered_json::object());
   std::cout << a.value("utc", std::string("?")) << ", " << a.value("draws", 0) << " questions, "
             << a.value("days", 0) << " days each\n";
+  std::cout << audit_staleness(a, r) << "\n";
   TextTable t({"measure", "value"});
   t.add_row({"answered without extrapolation", std::to_string(a.value("answered", 0)) + " of " +
                                                    std::to_string(a.value("draws", 0))});
@@ -298,6 +321,7 @@ int run_status(const std::string& db, bool json) {
       j["failed_cases"].push_back({{"case_id", f.case_id}, {"sweep_label", f.sweep_label}, {"tug", f.tug},
                                    {"tow", f.tow}, {"error_message", f.error_message}});
     }
+    j["content_build_id"] = r.content_build_id ? ordered_json(*r.content_build_id) : ordered_json();
     j["last_audit"] = last_audit_json(r);
     std::cout << j.dump(2) << "\n";
     return 0;

@@ -18,6 +18,9 @@
 //   cli-audit-9  a sweep file edited since the build (a comment) is still the audit's basis when its model
 //                reproduces the calculated mean tension the database stores; a changed model is not
 //   cli-audit-10 a ship file edited since the build is named (stderr and the summary)
+//   cli-audit-11 the summary names the build whose content it measured; `towdb status` says
+//                whether a later build has computed cases since, and an audit without the
+//                record is named as such
 //
 // The databases are synthetic (tests/query/synthetic_db.hpp) and the direct
 // simulations 3 days long: the errors mean nothing here, only the bookkeeping.
@@ -244,8 +247,9 @@ TEST_F(CliAudit, BadInputExitsTwoAndStoresNothing) {  // cli-audit-4
   const auto lying = dir_ / "lying.towdb";
   std::filesystem::copy_file(db_, lying);
   {
-    auto db = store::Database::open(lying, store::Database::Mode::kReadWrite);
-    db.exec("PRAGMA ignore_check_constraints = ON; UPDATE results SET gumbel_alpha_per_kip = -0.2 WHERE case_id = 2");
+    auto writable = store::Database::open(lying, store::Database::Mode::kReadWrite);
+    writable.exec(
+        "PRAGMA ignore_check_constraints = ON; UPDATE results SET gumbel_alpha_per_kip = -0.2 WHERE case_id = 2");
   }
   const CommandResult r = run_towdb(audit(lying, "--draws 2"));
   EXPECT_EQ(r.exit_code, 2) << r.err;
@@ -280,6 +284,50 @@ TEST_F(CliAudit, ShipFilesEditedSinceTheBuildAreNamed) {  // cli-audit-10
   EXPECT_EQ(json::parse(r.out).at("summary").at("ship_files_changed_since_build"), json::array({"LHA 1"}));
   EXPECT_NE(r.err.find("the ship files of LHA 1 are not the ones the database was built with"), std::string::npos)
       << r.err;
+}
+
+// Marks every case of `db_path` as computed by build `build_id` (a builds row is added).
+void assign_cases_to_new_build(const std::filesystem::path& db_path, std::int64_t build_id) {
+  auto db = store::Database::open(db_path, store::Database::Mode::kReadWrite);
+  db.prepare("INSERT INTO builds (build_id, code_version, command_line, sweep_file, sweep_sha256, host, threads, "
+             "started_utc, status) VALUES (?, 'test', 'towdb build', 'x.toml', 'x', 'test', 1, "
+             "'2026-01-01T00:00:00Z', 'completed')")
+      .bind(1, build_id)
+      .run();
+  db.prepare("UPDATE cases SET build_id = ? WHERE case_id = (SELECT min(case_id) FROM cases)").bind(1, build_id).run();
+}
+
+TEST_F(CliAudit, TheSummaryNamesTheContentItMeasured) {  // cli-audit-11
+  const std::string status_text = "status --db '" + db_.string() + "'";
+  // An audit stored before the record existed.
+  {
+    auto db = store::Database::open(db_, store::Database::Mode::kReadWrite);
+    db.exec("INSERT INTO meta (key, value) VALUES ('last_audit', '{\"draws\": 1, \"days\": 3}')");
+  }
+  const CommandResult old_audit = run_towdb(status_text);
+  ASSERT_EQ(old_audit.exit_code, 0) << old_audit.err;
+  EXPECT_NE(old_audit.out.find("audited content: not recorded"), std::string::npos) << old_audit.out;
+
+  assign_cases_to_new_build(db_, 7);
+  ASSERT_EQ(run_towdb(audit(db_, "--draws 1")).exit_code, 0);
+  const json stored = json::parse(meta_value(db_, "last_audit"));
+  EXPECT_EQ(stored.at("content_build_id"), 7);
+  EXPECT_EQ(stored.at("cases_done").get<std::int64_t>(), json::parse(run_towdb(status_text + " --json").out)
+                                                              .at("cases_by_status")
+                                                              .at("done")
+                                                              .get<std::int64_t>());
+  const CommandResult current = run_towdb(status_text);
+  EXPECT_NE(current.out.find("audited content: build 7"), std::string::npos) << current.out;
+  EXPECT_EQ(current.out.find("warning: the audit"), std::string::npos) << current.out;
+
+  // A later build computes a case: the stored audit no longer describes the database.
+  assign_cases_to_new_build(db_, 8);
+  const CommandResult stale = run_towdb(status_text);
+  ASSERT_EQ(stale.exit_code, 0) << stale.err;
+  EXPECT_NE(stale.out.find("warning: the audit measured the database as of build 7"), std::string::npos)
+      << stale.out;
+  EXPECT_NE(stale.out.find("build 8 has computed cases or profiles since"), std::string::npos) << stale.out;
+  EXPECT_EQ(json::parse(run_towdb(status_text + " --json").out).at("content_build_id"), 8);
 }
 
 class CliQueryDefaultMean : public ::testing::Test {

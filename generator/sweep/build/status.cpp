@@ -68,6 +68,14 @@ StatusReport read_status(const std::filesystem::path& db_path, int max_builds, i
     }
   }
   {
+    // cases.build_id is rewritten only when a build changes the case's status (writer.cpp).
+    store::Statement st = db.prepare(
+        "SELECT max(b) FROM (SELECT max(build_id) AS b FROM cases WHERE status = 'done' "
+        "UNION ALL SELECT max(build_id) FROM heading_profiles UNION ALL SELECT max(build_id) FROM speed_profiles)");
+    st.step();
+    if (!st.is_null(0)) r.content_build_id = st.column_int(0);
+  }
+  {
     store::Statement st = db.prepare("SELECT value FROM meta WHERE key = 'last_audit'");
     if (st.step()) r.last_audit = st.column_text(0);
   }

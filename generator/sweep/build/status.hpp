@@ -50,6 +50,10 @@ struct StatusReport {
   std::vector<BuildRecord> builds;        // newest first, at most `max_builds`
   std::vector<FailedCase> failed;         // at most `max_failed`, by case_id
   std::optional<std::string> last_audit;   // meta.last_audit: the JSON summary `towdb audit` stored
+  // The newest build that computed a stored case or profile (none when nothing is computed):
+  // what an audit names as the content it measured. A build that computes nothing (every case
+  // up to date) does not change it.
+  std::optional<std::int64_t> content_build_id;
 };
 
 StatusReport read_status(const std::filesystem::path& db_path, int max_builds = 10, int max_failed = 20);
