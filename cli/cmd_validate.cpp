@@ -64,7 +64,7 @@ struct ValidateArgs {
   std::string non_surge_stiffness = "a10";
   bool nonnegative_wave_damping = false;
   double encounter_cutoff_rad_s = simulation::kEncounterCutoff_rad_s;
-  bool surge_diffraction = false;
+  bool no_surge_diffraction = false;
   std::string database;  // --database: answers of this database instead of simulations
 };
 
@@ -134,7 +134,9 @@ std::string run_signature(const validation::RunOptions& o, const io::ShipCatalog
      << " response_frequencies=" << o.response_frequencies << " second_order_forces=" << o.second_order_forces
      << " wave_surge_damping=" << o.wave_surge_damping << " thesis_towline_fit=" << o.thesis_towline_fit
      << " tow_drift_at_tow=" << o.tow_drift_at_tow;
-  // Written only when set, so that journals of the default chain stay valid.
+  // The diagnostics, each written only when set, so that journals of the default
+  // chain stay valid; surge_diffraction is the default since 0.4.0, so a 0.3.0
+  // journal (without it) no longer matches and its cases are computed again.
   if (o.added_resistance_aft_of_beam) os << " added_resistance_aft_of_beam=1";
   if (o.signed_drift) os << " signed_drift=1";
   if (o.linear_non_surge_tension) os << " linear_non_surge_tension=1";
@@ -241,7 +243,7 @@ validation::RunOptions run_options(const ValidateArgs& a) {
   options.non_surge_stiffness = non_surge_stiffness(a.non_surge_stiffness);
   options.nonnegative_wave_damping = a.nonnegative_wave_damping;
   options.encounter_cutoff_rad_s = a.encounter_cutoff_rad_s;
-  options.surge_diffraction = a.surge_diffraction;
+  options.surge_diffraction = !a.no_surge_diffraction;
   options.validate();
   return options;
 }
@@ -345,7 +347,7 @@ std::string run_note(const ValidateArgs& a, const std::vector<validation::CaseOu
   if (a.encounter_cutoff_rad_s != simulation::kEncounterCutoff_rad_s) {
     note << " --encounter-cutoff-rad-s " << fmt(a.encounter_cutoff_rad_s);
   }
-  if (a.surge_diffraction) note << " --surge-diffraction";
+  if (a.no_surge_diffraction) note << " --no-surge-diffraction";
   note << "`. Simulated days per case = max(" << a.min_days << ", round(" << fmt(a.days_scale)
        << " x thesis days)); seed = thesis case number. Sum of case run times " << fmt(case_time_s, 0)
        << " s (this invocation: " << fmt(wall_s, 0) << " s wall, " << reused << " cases reused from the journal).";
@@ -563,8 +565,9 @@ void add_validate_command(CLI::App& app, Context& ctx) {
                 "Diagnostic: encounter-frequency cutoff of the forcing records (default 3; the thesis's 5D grid "
                 "ends at 2)")
       ->check(number_in(1.0, simulation::kEncounterCutoff_rad_s));
-  c->add_flag("--surge-diffraction", a->surge_diffraction,
-              "Diagnostic: add the surge diffraction force (A11 / rho V)(w_e / w) x Froude-Krylov (EQ-STRIP-7)");
+  c->add_flag("--no-surge-diffraction", a->no_surge_diffraction,
+              "Diagnostic: leave out the surge diffraction force (A11 / rho V)(w_e / w) x Froude-Krylov "
+              "(EQ-STRIP-7; the 0.3.0 chain)");
   CLI::Option* database = c->add_option(
       "--database", a->database,
       "Ask each case of a towdb database (query library, the thesis's inputs) instead of simulating it");
@@ -572,7 +575,7 @@ void add_validate_command(CLI::App& app, Context& ctx) {
        {"--threads", "--days-scale", "--min-days", "--response-frequencies", "--fresh", "--no-second-order-forces",
         "--no-wave-surge-damping", "--thesis-towline-fit", "--tow-drift-at-tow", "--added-resistance-aft-of-beam",
         "--signed-drift", "--linear-non-surge-tension", "--non-surge-stiffness", "--nonnegative-wave-damping",
-        "--encounter-cutoff-rad-s", "--surge-diffraction"}) {
+        "--encounter-cutoff-rad-s", "--no-surge-diffraction"}) {
     database->excludes(c->get_option(simulation_only));
   }
   c->callback([&ctx, a] {

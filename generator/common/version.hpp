@@ -2,7 +2,7 @@
 #ifndef TOWDB_COMMON_VERSION_HPP
 #define TOWDB_COMMON_VERSION_HPP
 
-#define TOWDB_VERSION_STRING "0.3.0"
+#define TOWDB_VERSION_STRING "0.4.0"
 
 namespace towdb {
 inline constexpr const char* kVersion = TOWDB_VERSION_STRING;

@@ -133,7 +133,7 @@
 //               likewise the z n_1 part of the pitch moment (n_5 = z n_1 - x n_3),
 //               F5 += i k cos mu rho g int e^{-ikx cos mu} int int_A z e^{kz - iky sin mu} dA dx,
 //               which with the mass coupling M15 = m z_G makes pitch -> wave slope.
-//               Diffraction (ResponseOptions::surge_diffraction, default off): the
+//               Diffraction (ResponseOptions::surge_diffraction, on since 0.4.0): the
 //               long-wave limit of the exciting force on a body, F = (rho V + A11) du/dt
 //               (G. I. Taylor; Newman, Marine Hydrodynamics, 1977, sec. 4.15), with the
 //               added-mass part driven by the fluid acceleration the moving hull meets,
@@ -202,8 +202,9 @@ struct ResponseOptions {
   // EQ-AR-4: Gerritsma-Beukelman aft of beam (cos mu > 0) when true; else R_aw = 0 there.
   bool added_resistance_aft_of_beam = false;
   // EQ-STRIP-7: the surge diffraction force (A11 / rho V)(w_h / w) F1_FK when
-  // true; Froude-Krylov alone when false (the chain's default; issue 17 lead).
-  bool surge_diffraction = false;
+  // true (the chain's default since 0.4.0, issue 17); Froude-Krylov alone when
+  // false (0.3.0 and the thesis's 5D surge force; a diagnostic now).
+  bool surge_diffraction = true;
   int num_threads = 1;                         // frequencies in parallel; <= 0 = all cores
 
   void validate() const;

@@ -88,9 +88,10 @@ struct RunOptions {
   // records (CaseOptions::record, thesis eq. 3-22); the chain's is 3 rad/s,
   // the thesis's 5D grid ends at 2 rad/s. [1, 3] rad/s.
   double encounter_cutoff_rad_s = simulation::kEncounterCutoff_rad_s;
-  // Diagnostic (issue 17): the surge diffraction force of EQ-STRIP-7
-  // (seakeeping::ResponseOptions::surge_diffraction).
-  bool surge_diffraction = false;
+  // The surge diffraction force of EQ-STRIP-7 (seakeeping::ResponseOptions::
+  // surge_diffraction), on as in the chain; false is issue 17's diagnostic of
+  // the 0.3.0 chain (Froude-Krylov alone).
+  bool surge_diffraction = true;
   void validate() const;
 };
 

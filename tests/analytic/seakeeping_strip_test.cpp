@@ -65,7 +65,9 @@ TEST(SeakeepingStrip, SurgeDiffractionMakesTheLongWaveSurgeFollowTheWater) {
   const double ratio = wigley().hull.surge_added_mass_ratio;
   ASSERT_GT(ratio, 0.0);
   const std::vector<double> omega{omega_for_wavelength(20.0 * l)};
-  const auto fk_only = compute_response(wigley(), 0.0, kPi, omega);
+  ResponseOptions without;
+  without.surge_diffraction = false;
+  const auto fk_only = compute_response(wigley(), 0.0, kPi, omega, without);
   ResponseOptions with;
   with.surge_diffraction = true;
   const auto both = compute_response(wigley(), 0.0, kPi, omega, with);

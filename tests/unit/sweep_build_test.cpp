@@ -48,6 +48,9 @@
 //                  given tension); one profile per line of two or more speeds, the function's values
 //                  as binary16 kips; 1 and 2 threads give the same rows; a second build computes
 //                  none; a stop in the stage resumes to the same rows; a failing line keeps none
+//   sweep-build-20 the build's profile functions are the linear model without the wave-induced
+//                  surge damping (simulation_runner.hpp profile_options), bit for bit, in head
+//                  seas where that damping is not zero
 #include <sqlite3.h>
 #include <sys/file.h>
 #include <fcntl.h>
@@ -69,6 +72,7 @@
 #include "store/packed_days.hpp"
 #include "sweep/build/numerics.hpp"
 #include "sweep/build/progress.hpp"
+#include "sweep/build/simulation_runner.hpp"
 #include "sweep/sweep.hpp"
 #include "sweep_test_runner.hpp"
 #include "test_support.hpp"
@@ -977,6 +981,45 @@ mean_tensions = [ { label = "given-60k", basis = "given", value_lbf = 60000.0 } 
   const sweep::BuildSummary t = f.build(two, 2, make_test_runner(), o);
   EXPECT_EQ(t.speed_profiles.lines, 0);
   EXPECT_EQ(query_int(two, "SELECT count(*) FROM speed_profiles"), 0);
+}
+
+TEST(SweepBuild, ProfilesLeaveOutTheWaveInducedSurgeDamping) {  // sweep-build-20
+  Fixture f;
+  const sweep::CaseSpec& spec = f.cases.front();  // the small sweep's first case, at 5 kt
+  const model::Vessel& tug = f.catalog.vessel(spec.tug).vessel;
+  const model::Vessel& tow = f.catalog.vessel(spec.tow).vessel;
+  simulation::CaseInputs in;
+  in.tug = &tug;
+  in.tow = &tow;
+  in.towline = f.catalog.towline(tug, spec.line, spec.length_m());
+  in.speed_m_s = spec.speed_m_s();
+  in.sea = sweep::sea_state(spec.sea, 180.0);
+  in.mean_tension_n = spec.mean_tension_n();
+  in.days = spec.days;
+  in.seed = static_cast<std::uint64_t>(spec.seed);
+
+  const simulation::CaseOptions chain;
+  ASSERT_TRUE(chain.wave_surge_damping);
+  simulation::CaseOptions without = chain;
+  without.wave_surge_damping = false;
+  EXPECT_FALSE(sweep::profile_options(chain).wave_surge_damping);
+
+  const std::vector<double> headings{180.0};
+  const std::vector<double> profile = sweep::linear_heading_profile(chain)(spec, f.catalog, headings);
+  ASSERT_EQ(profile.size(), 1u);
+  EXPECT_EQ(profile[0], simulation::linear_tension_sigma_by_heading_n(in, without, headings)[0]);
+  // In head seas the wave-induced damping is not zero, so the chain's own
+  // linear sigma differs: the option is what the profile leaves out.
+  EXPECT_NE(profile[0], simulation::linear_tension_sigma_by_heading_n(in, chain, headings)[0]);
+
+  sweep::SpeedPoint point;
+  point.speed_kt = spec.speed_kt;
+  point.mean_tension_lbf = spec.mean_tension_lbf;
+  sweep::CaseSpec head = spec;
+  head.heading_deg = 180.0;
+  const std::vector<double> along_speed = sweep::linear_speed_profile(chain)(head, f.catalog, {point});
+  ASSERT_EQ(along_speed.size(), 1u);
+  EXPECT_EQ(along_speed[0], std::sqrt(simulation::linear_tension_variance_n2(in, without)));
 }
 
 }  // namespace

@@ -57,7 +57,7 @@ std::vector<Line> finished_lines(store::Database& db, const std::vector<CaseSpec
     std::vector<std::string> member_keys;
     for (std::size_t i : line.members) member_keys.push_back(keys[i].case_key);
     line.profile_key = line_profile_key(
-        "heading-profile/1|" + canonical_number(kProfileStepDeg) + "|" + std::to_string(kProfileHeadings),
+        "heading-profile/2|" + canonical_number(kProfileStepDeg) + "|" + std::to_string(kProfileHeadings),
         std::move(member_keys));
     out.push_back(std::move(line));
   }

@@ -3,12 +3,13 @@
 // length, speed, sea and mean tension; a wind or two-parameter sea without
 // swell), the linear model's dynamic-tension standard deviation sigma(h) on a
 // uniform heading grid, 0 to 180 deg every kProfileStepDeg (simulation
-// EQ-CASE-3). The query interpolates the simulated tension divided by this
+// EQ-CASE-3, without the wave-induced surge damping: simulation_runner.hpp
+// profile_options). The query interpolates the simulated tension divided by this
 // profile across a heading cell (query.h EQ-QUERY-11): near beam seas the
 // tension has minima a few degrees wide that the linear model shares.
 //
 // Keys, resumability, determinism:
-//   - profile_key = SHA-256 of "heading-profile/1", the grid and the sorted
+//   - profile_key = SHA-256 of "heading-profile/2", the grid and the sorted
 //     case keys of the line's finished cases: a profile is recomputed exactly
 //     when one of its cases changed (a case key covers every input and the
 //     code version, EQ-SWEEP-6), and every case row names its profile;

@@ -65,7 +65,13 @@ simulation::CaseInputs case_inputs(const CaseSpec& spec, const io::ShipCatalog& 
 
 }  // namespace
 
+simulation::CaseOptions profile_options(simulation::CaseOptions options) {
+  options.wave_surge_damping = false;
+  return options;
+}
+
 HeadingProfileFn linear_heading_profile(simulation::CaseOptions options) {
+  options = profile_options(options);
   options.validate();
   return [options](const CaseSpec& spec, const io::ShipCatalog& catalog, const std::vector<double>& headings_deg) {
     return simulation::linear_tension_sigma_by_heading_n(case_inputs(spec, catalog), options, headings_deg);
@@ -73,6 +79,7 @@ HeadingProfileFn linear_heading_profile(simulation::CaseOptions options) {
 }
 
 SpeedProfileFn linear_speed_profile(simulation::CaseOptions options) {
+  options = profile_options(options);
   options.validate();
   return [options](const CaseSpec& spec, const io::ShipCatalog& catalog, const std::vector<SpeedPoint>& points) {
     std::vector<double> sigma;

@@ -32,13 +32,26 @@ CaseRunner simulation_case_runner(simulation::CaseOptions options);
 LowestPointFn static_lowest_elevation(simulation::CaseOptions options);
 
 // The linear heading profile of a case's line (simulation EQ-CASE-3) with
-// `options` (responses shared with the cases through the response cache).
+// `options` (responses shared with the cases through the response cache),
+// without the wave-induced surge damping (profile_options).
 HeadingProfileFn linear_heading_profile(simulation::CaseOptions options);
 
 // The linear speed profile of a case's line (simulation EQ-CASE-3 at each
 // point's speed and mean tension; responses shared through the response
-// cache, towline fits through the fit cache).
+// cache, towline fits through the fit cache), without the wave-induced surge
+// damping (profile_options).
 SpeedProfileFn linear_speed_profile(simulation::CaseOptions options);
+
+// The case options of a profile: `options` without the wave-induced surge
+// damping (EQ-AR-3). A profile is used only through its shape within a cell
+// (query.h EQ-QUERY-11, 12: the stored tension divided by the profile), and
+// that damping, a derivative of the added resistance by speed, costs a second
+// strip theory of both vessels at U + dU: half of the profile stage. Measured
+// on five lines (T-ATF with LHA 1, FFG 7, AE 26, YRBM, CG 47): the profile's
+// shape within a cell moves by 1.4 % at most (the LHA 1, whose wave damping is
+// negative in bow seas) and by 0.01 % on the others (docs/database-history.md,
+// version 0.4.0).
+simulation::CaseOptions profile_options(simulation::CaseOptions options);
 
 // R_S = 2 int R_aw/zeta^2 S dw of the tow (seakeeping EQ-AR-2), summed over
 // the wave systems, on the case grid of `options` (responses shared with the

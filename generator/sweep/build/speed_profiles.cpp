@@ -73,7 +73,7 @@ std::vector<SpeedLine> finished_speed_lines(store::Database& db, const std::vect
     if (speeds.size() < 2 || ambiguous) continue;
     line.points = speed_profile_points(speeds, means);
     line.profile_key =
-        line_profile_key("speed-profile/1|" + canonical_number(kSpeedProfileStepKt), std::move(member_keys));
+        line_profile_key("speed-profile/2|" + canonical_number(kSpeedProfileStepKt), std::move(member_keys));
     out.push_back(std::move(line));
   }
   return out;

@@ -3,7 +3,8 @@
 // (same tug, tow, line type and length, sea and heading, and the same sweep
 // entry and mean-tension label; a sea without swell), the linear model's dynamic-tension standard deviation
 // sigma(V) on a uniform speed grid from the line's lowest stored speed to its
-// highest, at most kSpeedProfileStepKt apart (simulation EQ-CASE-3). The query
+// highest, at most kSpeedProfileStepKt apart (simulation EQ-CASE-3, without the
+// wave-induced surge damping as EQ-SWEEP-8). The query
 // interpolates the simulated tension divided by this profile across a speed
 // cell (query.h EQ-QUERY-12): in following and quartering seas the encounter
 // frequency folds (w_e = g / 4V) through the coupled surge system's response,
@@ -19,10 +20,11 @@
 // the stored cases' own tensions joined geometrically: constant for an
 // absolute rule, and for a factor exactly the factor times the query's
 // T_calc, which the query interpolates the same way (query.h EQ-QUERY-9).
-// At a stored speed the profile point is the case's own linear model.
+// At a stored speed the profile point is the case's own linear model without
+// the wave-induced surge damping (simulation_runner.hpp profile_options).
 //
 // Keys, resumability, determinism (as EQ-SWEEP-8):
-//   - profile_key = SHA-256 of "speed-profile/1", the step and the sorted
+//   - profile_key = SHA-256 of "speed-profile/2", the step and the sorted
 //     case keys of the line: recomputed exactly when one of its cases changed;
 //     the keys are read into memory (no index on them: the file's bytes go to
 //     cases);

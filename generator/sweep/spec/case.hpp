@@ -162,7 +162,8 @@ using CaseRunner = std::function<CaseOutcome(const CaseSpec&, const io::ShipCata
 // schema 6 (the runner's fit carries it for new ones).
 using LowestPointFn = std::function<double(const CaseSpec&, const io::ShipCatalog&)>;
 // The linear dynamic-tension standard deviation [N] of a case's line at each
-// of `headings_deg` (the spec's heading replaced; simulation EQ-CASE-3): the
+// of `headings_deg` (the spec's heading replaced; simulation EQ-CASE-3, which
+// the build's function evaluates without the wave-induced surge damping): the
 // heading profiles a build stores for the query (sweep/build/profiles.hpp).
 using HeadingProfileFn =
     std::function<std::vector<double>(const CaseSpec&, const io::ShipCatalog&, const std::vector<double>& headings_deg)>;
@@ -175,7 +176,8 @@ struct SpeedPoint {
 };
 // The linear dynamic-tension standard deviation [N] of a case's line at each
 // of `points` (the spec's speed and mean tension replaced, every other input
-// as in the spec; simulation EQ-CASE-3): the speed profiles a build stores
+// as in the spec; simulation EQ-CASE-3, which the build's function evaluates
+// without the wave-induced surge damping): the speed profiles a build stores
 // for the query (sweep/build/speed_profiles.hpp).
 using SpeedProfileFn =
     std::function<std::vector<double>(const CaseSpec&, const io::ShipCatalog&, const std::vector<SpeedPoint>& points)>;
