@@ -9,6 +9,9 @@ if [ ! -f towdb.sqlite ]; then
   echo "pack-db: db/towdb.sqlite not found (build it first: db/README.md)" >&2
   exit 2
 fi
+# A build leaves the file in WAL mode; the bundled file keeps a rollback journal, so that it
+# can be read from a read-only folder (db/README.md, "Storage").
+sqlite3 towdb.sqlite "PRAGMA journal_mode = DELETE;" > /dev/null
 tmp=towdb.sqlite.tar.xz.tmp
 trap 'rm -f "$tmp"' EXIT
 tar --sort=name --mtime='2026-01-01 00:00Z' --owner=0 --group=0 --numeric-owner \

@@ -29,7 +29,8 @@ namespace {
 
 // The measures of the default chain on this run (version 0.4.0, with the surge
 // diffraction force; measured 2026-12-07 at commit 0cd6235, 398 s on 2 cores;
-// docs/validation.md), cases with the thesis tension <= 300 kips. Version 0.3.0 reached 0.756, 56 %, 0.59 and 0.825 / 0.789 / 1.102 / 1.325.
+// docs/validation.md), cases with the thesis tension <= 300 kips. Version 0.3.0
+// reached 0.756, 56 %, 0.59 and 0.825 / 0.789 / 1.102 / 1.325.
 constexpr double kMeasuredSpearman = 0.767;
 constexpr double kMeasuredWithin15 = 0.57;
 constexpr double kMeasuredWireSpearman = 0.617;
