@@ -250,6 +250,16 @@ std::vector<AuditOutcome> run_audit(const std::filesystem::path& db_path, const 
   return out;
 }
 
+void replay_audit(const std::filesystem::path& db_path, std::vector<AuditOutcome>* earlier) {
+  for (AuditOutcome& o : *earlier) {
+    o.answered = o.covered = false;
+    o.refusal.clear();
+    o.answer_999_kips = o.uncertainty_kips = o.answer_extreme_lbf = kNaN;
+  }
+  answer_from_database(db_path, earlier);
+  for (AuditOutcome& o : *earlier) compute_errors(&o);
+}
+
 AuditSummary summarise(const std::vector<AuditOutcome>& outcomes) {
   AuditSummary s;
   s.draws = static_cast<int>(outcomes.size());

@@ -103,6 +103,12 @@ std::vector<AuditQuestion> draw_questions(const DatabaseSpan& span, const std::o
 std::vector<AuditOutcome> run_audit(const std::filesystem::path& db_path, const io::ShipCatalog& catalog,
                                     const std::vector<AuditQuestion>& questions, const AuditOptions& options);
 
+// Replay: the questions of an earlier audit answered again from the database
+// as it is now (after a change to the query library or to the stored cases),
+// against that audit's own simulations, which `earlier` carries; nothing is
+// simulated. Answers and errors are recomputed, the simulations kept.
+void replay_audit(const std::filesystem::path& db_path, std::vector<AuditOutcome>* earlier);
+
 AuditSummary summarise(const std::vector<AuditOutcome>& outcomes);
 
 // Linear interpolation between order statistics at fraction f of the way

@@ -5,6 +5,7 @@
 //
 //   towdb audit --db FILE --draws N [--seed S] [--days D] [--threads T]
 //               [--json] [--plot FILE.png] [--no-store]
+//   towdb audit --db FILE --replay EARLIER.json [--json] [--plot FILE.png]
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,7 +14,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <memory>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -44,9 +47,106 @@ struct AuditArgs {
   bool json = false;
   bool no_store = false;
   std::string plot;
+  std::string replay;  // an earlier audit's --json output
 };
 
 ordered_json nullable(double v) { return std::isfinite(v) ? ordered_json(v) : ordered_json(nullptr); }
+
+// The questions and simulations of an earlier audit's --json output, read
+// strictly: a missing or mistyped field is named with its question.
+struct ReplayInput {
+  AuditOptions options;
+  std::vector<AuditOutcome> outcomes;
+};
+
+class ReplayReader {
+ public:
+  explicit ReplayReader(std::string path) : path_(std::move(path)) {}
+
+  ReplayInput read() const {
+    std::ifstream in(path_);
+    if (!in) throw InputError("--replay " + path_ + ": cannot read the file");
+    const ordered_json j = ordered_json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.is_object())
+      throw InputError("--replay " + path_ + ": not a JSON object (expected the output of towdb audit --json)");
+    ReplayInput r;
+    const ordered_json& summary = field(j, "summary", "");
+    r.options.seed = unsigned_field(summary, "seed", "summary.");
+    r.options.days = static_cast<int>(unsigned_field(summary, "days", "summary."));
+    const ordered_json& questions = field(j, "questions", "");
+    if (!questions.is_array() || questions.empty())
+      throw InputError("--replay " + path_ + ": questions: expected a non-empty array of questions");
+    for (std::size_t i = 0; i < questions.size(); ++i) r.outcomes.push_back(outcome(questions[i], i));
+    r.options.draws = static_cast<int>(r.outcomes.size());
+    return r;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+    throw InputError("--replay " + path_ + ": " + where + ": " + what);
+  }
+  const ordered_json& field(const ordered_json& o, const std::string& key, const std::string& where) const {
+    if (!o.is_object() || !o.contains(key)) fail(where + key, "missing");
+    return o.at(key);
+  }
+  double number(const ordered_json& o, const std::string& key, const std::string& where) const {
+    const ordered_json& v = field(o, key, where);
+    if (!v.is_number() || !std::isfinite(v.get<double>())) fail(where + key, "expected a number, found " + v.dump());
+    return v.get<double>();
+  }
+  std::uint64_t unsigned_field(const ordered_json& o, const std::string& key, const std::string& where) const {
+    const ordered_json& v = field(o, key, where);
+    if (!v.is_number_unsigned()) fail(where + key, "expected a whole number >= 0, found " + v.dump());
+    return v.get<std::uint64_t>();
+  }
+  std::string text(const ordered_json& o, const std::string& key, const std::string& where) const {
+    const ordered_json& v = field(o, key, where);
+    if (!v.is_string()) fail(where + key, "expected a string, found " + v.dump());
+    return v.get<std::string>();
+  }
+  // A number, or null where the earlier audit had none (NaN).
+  double nullable_number(const ordered_json& v, const std::string& where) const {
+    if (v.is_null()) return std::numeric_limits<double>::quiet_NaN();
+    if (!v.is_number()) fail(where, "expected a number or null, found " + v.dump());
+    return v.get<double>();
+  }
+
+  AuditOutcome outcome(const ordered_json& q, std::size_t i) const {
+    const std::string where = "questions[" + std::to_string(i) + "].";
+    AuditOutcome o;
+    o.q.index = static_cast<int>(unsigned_field(q, "index", where));
+    o.q.tug = text(q, "tug", where);
+    o.q.tow = text(q, "tow", where);
+    o.q.line = text(q, "line", where);
+    if (o.q.line != "wire" && o.q.line != "fiber")
+      fail(where + "line", "\"" + o.q.line + "\" is not a line type (wire or fiber)");
+    o.q.speed_kt = number(q, "speed_kt", where);
+    o.q.wind_kt = number(q, "wind_kt", where);
+    o.q.heading_deg = number(q, "heading_deg", where);
+    o.q.length_ft = number(q, "length_ft", where);
+    o.q.mean_tension_lbf = number(q, "mean_tension_lbf", where);
+    o.q.seed = unsigned_field(q, "seed", where);
+    const ordered_json& simulated = field(q, "simulated", where);
+    if (!simulated.is_boolean()) fail(where + "simulated", "expected true or false, found " + simulated.dump());
+    o.simulated = simulated.get<bool>();
+    if (q.contains("simulation_error")) o.simulation_error = text(q, "simulation_error", where);
+    o.simulated_999_kips = o.simulated_ci_low_kips = o.simulated_ci_high_kips = o.simulated_extreme_lbf =
+        std::numeric_limits<double>::quiet_NaN();
+    if (!o.simulated) return o;
+    o.simulated_999_kips = number(q, "simulated_999_kips", where);
+    if (!(o.simulated_999_kips > 0.0))
+      fail(where + "simulated_999_kips", "expected a positive tension, found " + format_value(o.simulated_999_kips));
+    const ordered_json& ci = field(q, "simulated_ci_kips", where);
+    if (!ci.is_array() || ci.size() != 2) fail(where + "simulated_ci_kips", "expected [low, high], found " + ci.dump());
+    o.simulated_ci_low_kips = nullable_number(ci[0], where + "simulated_ci_kips[0]");
+    o.simulated_ci_high_kips = nullable_number(ci[1], where + "simulated_ci_kips[1]");
+    // As the audit computed it: mean + dynamic (1 kip = 1,000 lbf).
+    o.simulated_extreme_lbf = o.q.mean_tension_lbf + 1000.0 * o.simulated_999_kips;
+    return o;
+  }
+
+  std::string path_;
+};
 
 // Refused before any work: the summary could not be stored afterwards.
 void require_writable(const std::string& db) {
@@ -241,9 +341,47 @@ void store_summary(const std::string& db_path, const ordered_json& summary) {
   if (!was_wal) db.exec("PRAGMA journal_mode = DELETE");
 }
 
+// The output of both a fresh audit and a replay.
+void report(const AuditArgs& a, const std::vector<AuditOutcome>& outcomes, const AuditSummary& s,
+            const AuditOptions& o, const ordered_json& summary, const ordered_json& basis_json_value,
+            const std::string& mean_text) {
+  if (!a.plot.empty()) write_audit_plot(a.plot, outcomes);
+  if (a.json) {
+    ordered_json j;
+    j["database"] = a.db;
+    if (!a.replay.empty()) j["replay_of"] = a.replay;
+    j["mean_tension_basis"] = basis_json_value;
+    j["summary"] = summary;
+    j["questions"] = ordered_json::array();
+    for (const AuditOutcome& x : outcomes) j["questions"].push_back(question_json(x));
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  print_questions(outcomes);
+  print_refusals(outcomes);
+  print_summary(s, o, mean_text);
+}
+
+// Replay (audit.hpp): the earlier audit's questions and simulations, this
+// database's answers. Nothing is stored: the stored summary describes a
+// database against its own chain's simulations.
+int run_replay_command(const AuditArgs& a) {
+  ReplayInput in = ReplayReader(a.replay).read();
+  replay_audit(a.db, &in.outcomes);
+  const AuditSummary s = summarise(in.outcomes);
+  ordered_json summary = summary_json(s, in.options, "replayed");
+  const std::string text = "as in " + a.replay + " (its questions and " + std::to_string(in.options.days) +
+                           "-day simulations, answered again from " + a.db + ")";
+  report(a, in.outcomes, s, in.options, summary, ordered_json({{"replay_of", a.replay}}), text);
+  if (!a.json) std::cout << "replay: nothing simulated, nothing stored\n";
+  return 0;
+}
+
 int run_audit_command(const Context& ctx, const AuditArgs& a) {
   if (!std::filesystem::is_regular_file(a.db)) throw InputError("--db " + a.db + ": no such database file");
   if (!a.plot.empty()) check_output_file("--plot", a.plot);
+  if (!a.replay.empty()) return run_replay_command(a);
+  if (a.draws == 0) throw InputError("--draws is required (1 to 100000), or --replay FILE.json");
   if (!a.no_store) require_writable(a.db);
   const DatabaseSpan span = read_database_span(a.db);
   const io::ShipCatalog catalog = load_catalog(ctx);
@@ -289,21 +427,9 @@ int run_audit_command(const Context& ctx, const AuditArgs& a) {
   summary["ship_files_changed_since_build"] = changed_ships;
   summary["content_build_id"] = content.content_build_id ? ordered_json(*content.content_build_id) : ordered_json();
   summary["cases_done"] = content.cases_by_status.at("done");
-  if (!a.plot.empty()) write_audit_plot(a.plot, outcomes);
-  if (a.json) {
-    ordered_json j;
-    j["database"] = a.db;
-    j["mean_tension_basis"] = basis.basis ? basis_json(*basis.basis) : ordered_json({{"reason", basis.reason}});
-    j["summary"] = summary;
-    j["questions"] = ordered_json::array();
-    for (const AuditOutcome& x : outcomes) j["questions"].push_back(question_json(x));
-    std::cout << j.dump(2) << "\n";
-  } else {
-    print_questions(outcomes);
-    print_refusals(outcomes);
-    print_summary(s, o, mean_text);
-    std::cout << "run time " << fmt(runtime_s, 1) << " s\n";
-  }
+  report(a, outcomes, s, o, summary,
+         basis.basis ? basis_json(*basis.basis) : ordered_json({{"reason", basis.reason}}), mean_text);
+  if (!a.json) std::cout << "run time " << fmt(runtime_s, 1) << " s\n";
   if (a.no_store) return 0;
   summary["utc"] = sweep::utc_now();
   summary["code_version"] = kVersion;
@@ -319,15 +445,25 @@ void add_audit_command(CLI::App& app, Context& ctx) {
   CLI::App* c = app.add_subcommand(
       "audit", "Answer random in-range questions from a database and by direct simulation; report the errors");
   c->add_option("--db", a->db, "Database file (its meta table receives the summary)")->required();
-  c->add_option("--draws", a->draws, "Number of random questions")->required()->check(CLI::Range(1, kMaxDraws));
-  c->add_option("--seed", a->seed, "Seed of the draws and simulations (default 1)")->check(unsigned_integer());
-  c->add_option("--days", a->days, "Simulated days per question (default: the days of the database's cases)")
-      ->check(CLI::Range(3, 1000000));
+  CLI::Option* draws =
+      c->add_option("--draws", a->draws, "Number of random questions")->check(CLI::Range(1, kMaxDraws));
+  CLI::Option* seed =
+      c->add_option("--seed", a->seed, "Seed of the draws and simulations (default 1)")->check(unsigned_integer());
+  CLI::Option* days =
+      c->add_option("--days", a->days, "Simulated days per question (default: the days of the database's cases)")
+          ->check(CLI::Range(3, 1000000));
   c->add_option("--threads", a->threads, "Threads simulating questions (default: all cores); no effect on results")
       ->check(CLI::Range(0, 1024));
   c->add_flag("--json", a->json, "JSON output");
   c->add_option("--plot", a->plot, "Write a PNG: answers vs simulation, and the error distribution");
   c->add_flag("--no-store", a->no_store, "Do not store the summary in the database (e.g. a read-only file)");
+  c->add_option("--replay", a->replay,
+                "An earlier audit's --json output: its questions answered again from --db, against its "
+                "simulations (nothing simulated or stored)")
+      ->excludes(draws)
+      ->excludes(seed)
+      ->excludes(days)
+      ->check(CLI::ExistingFile);
   c->callback([&ctx, a] { ctx.action = [&ctx, a] { return run_audit_command(ctx, *a); }; });
 }
 

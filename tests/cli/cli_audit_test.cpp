@@ -21,6 +21,10 @@
 //   cli-audit-11 the summary names the build whose content it measured; `towdb status` says
 //                whether a later build has computed cases since, and an audit without the
 //                record is named as such
+//   cli-audit-12 --replay: an earlier audit's questions answered again from a database
+//                against that audit's simulations (the same answers from the same
+//                database, errors against edited simulations, a refusal from another
+//                database); nothing stored; a bad replay file exits 2 naming the field
 //
 // The databases are synthetic (tests/query/synthetic_db.hpp) and the direct
 // simulations 3 days long: the errors mean nothing here, only the bookkeeping.
@@ -328,6 +332,85 @@ TEST_F(CliAudit, TheSummaryNamesTheContentItMeasured) {  // cli-audit-11
       << stale.out;
   EXPECT_NE(stale.out.find("build 8 has computed cases or profiles since"), std::string::npos) << stale.out;
   EXPECT_EQ(json::parse(run_towdb(status_text + " --json").out).at("content_build_id"), 8);
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+}
+
+TEST_F(CliAudit, ReplayAnswersAnEarlierAuditsQuestionsAgain) {  // cli-audit-12
+  const CommandResult first = run_towdb(audit(db_, "--draws 2 --json --no-store"));
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  json earlier = json::parse(first.out);
+  const auto file = dir_ / "earlier.json";
+  write_text(file, earlier.dump(2));
+  const std::string replay = "audit --db '" + db_.string() + "' --replay '" + file.string() + "'";
+
+  // Same database, same code: the same answers and errors.
+  const CommandResult same = run_towdb(replay + " --json");
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  const json again = json::parse(same.out);
+  EXPECT_EQ(again.at("replay_of"), file.string());
+  EXPECT_EQ(again.at("summary").at("mean_tension"), "replayed");
+  ASSERT_EQ(again.at("questions").size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const json& a = earlier.at("questions")[i];
+    const json& b = again.at("questions")[i];
+    for (const char* key : {"answered", "answer_999_kips", "uncertainty_kips", "simulated_999_kips",
+                            "extrapolated_999_kips", "rel_error_999", "covered"})
+      EXPECT_EQ(a.at(key), b.at(key)) << key << " of question " << i;
+    if (a.at("rel_error_extreme").is_number())  // the simulated extreme rebuilt as mean + 1,000 x kips
+      EXPECT_NEAR(a.at("rel_error_extreme").get<double>(), b.at("rel_error_extreme").get<double>(), kSameCodeRelTol);
+  }
+  EXPECT_EQ(earlier.at("summary").at("dynamic_999"), again.at("summary").at("dynamic_999"));
+  EXPECT_EQ(meta_value(db_, "last_audit"), "");  // a replay stores nothing
+
+  // Errors are recomputed against the file's simulations: double one of them.
+  const json q0 = earlier.at("questions")[0];
+  ASSERT_TRUE(q0.at("answered").get<bool>()) << q0.dump();  // seed 3: LHA 1, a complete group
+  const double doubled_kips = 2.0 * q0.at("simulated_999_kips").get<double>();
+  earlier["questions"][0]["simulated_999_kips"] = doubled_kips;
+  write_text(file, earlier.dump(2));
+  const json edited = json::parse(run_towdb(replay + " --json").out);
+  const double answer_kips = edited.at("questions")[0].at("answer_999_kips").get<double>();
+  EXPECT_NEAR(edited.at("questions")[0].at("rel_error_999").get<double>(),
+              std::abs(answer_kips - doubled_kips) / doubled_kips, kSameCodeRelTol);
+
+  // Another database: LHA 1 only, so the FFG 7 question is refused with the library's reason.
+  const auto lha_only = dir_ / "lha.towdb";
+  write_synthetic_db(lha_only, group("LHA 1", 70000.0));
+  const CommandResult other = run_towdb("audit --db '" + lha_only.string() + "' --replay '" + file.string() + "'");
+  ASSERT_EQ(other.exit_code, 0) << other.err;
+  EXPECT_NE(other.out.find("question 1: refused"), std::string::npos) << other.out;
+  EXPECT_NE(other.out.find("FFG"), std::string::npos) << other.out;
+  EXPECT_NE(other.out.find("nothing simulated, nothing stored"), std::string::npos) << other.out;
+
+  // A bad replay file or flags that do not go with it: exit 2, the field named.
+  json missing = earlier;
+  missing["questions"][1].erase("speed_kt");
+  const auto missing_file = dir_ / "missing.json";
+  write_text(missing_file, missing.dump());
+  json rope = earlier;
+  rope["questions"][0]["line"] = "rope";
+  const auto rope_file = dir_ / "rope.json";
+  write_text(rope_file, rope.dump());
+  const auto text_file = dir_ / "text.json";
+  write_text(text_file, "not json");
+  const std::string db = "audit --db '" + db_.string() + "' ";
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {db + "--replay '" + missing_file.string() + "'", {"questions[1].speed_kt", "missing"}},
+      {db + "--replay '" + rope_file.string() + "'", {"questions[0].line", "rope", "wire or fiber"}},
+      {db + "--replay '" + text_file.string() + "'", {"--replay", "not a JSON object"}},
+      {db + "--replay '" + (dir_ / "none.json").string() + "'", {"--replay", "none.json"}},
+      {db + "--replay '" + file.string() + "' --draws 2", {"--replay", "--draws"}},
+      {db + "--replay '" + file.string() + "' --seed 2", {"--replay", "--seed"}},
+  };
+  for (const auto& [args, needles] : cases) {
+    const CommandResult r = run_towdb(args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+    for (const std::string& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << args << "\n" << r.err;
+  }
 }
 
 class CliQueryDefaultMean : public ::testing::Test {
