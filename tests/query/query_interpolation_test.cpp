@@ -27,6 +27,10 @@
 //                   profile are exact between stored headings, in log and linear space; a cell with a
 //                   corner without a profile is interpolated as before, never half corrected, and so is its
 //                   error estimate; the estimate along a corner's mean tensions moves with the corner
+//   query-interp-23 the heading profile's exponent (EQ-QUERY-11): data equal to a factor times the profile
+//                   squared are exact between stored headings (k = 2 measured from the stored headings); data
+//                   with a shallower or deeper shape than the profile get k clamped to 1 or 2 (the formula
+//                   checked at a cell's interior point)
 //   query-interp-20 speed profiles (EQ-QUERY-12): data equal to a smooth factor times a line's stored speed
 //                   profile (a fold-like swing inside a 2 kt cell) are exact between stored speeds, alone and
 //                   with a heading profile; the error estimate along speed then vanishes
@@ -920,6 +924,72 @@ TEST_F(QueryTest, HeadingProfilesMakeDataProportionalToThemExactBetweenHeadings)
     }
   }
   EXPECT_GT(nonzero, 0);  // some corner has two stored mean tensions: the check is not 0 = 0
+}
+
+// query-interp-23
+// Data x = L(s, w, l, m) P(h)^p on the profile test's grid with the stored profile P.
+GridSpec powered_profile_grid(double p) {
+  GridSpec g;
+  g.speeds_kt = {5.0, 7.0};
+  g.winds_kt = {20.0, 30.0};
+  g.headings_deg = {60.0, 75.0, 90.0, 105.0};
+  g.lengths_ft = {1000.0, 2000.0};
+  g.u_kips = [p](double s, double w, double h, double l, double m) {
+    return u_exponential(s, w, 0.0, l, m) * std::pow(profile_at(h), p);
+  };
+  g.beta_kips = [p](double s, double w, double h, double l, double m) {
+    return beta_exponential(s, w, 0.0, l, m) * std::pow(profile_at(h), p);
+  };
+  return g;
+}
+
+// Its cases at the factors every node stores (0.6 and 1.15, synthetic_db.hpp mean_factors), so that every
+// line (speed, wind, length, mean tension) has all four headings to measure its exponent on, as a sweep's
+// lines do.
+std::vector<SyntheticCase> every_heading(const GridSpec& g) {
+  std::vector<SyntheticCase> out;
+  for (const SyntheticCase& c : grid_cases(g)) {
+    const double f = c.mean_tension_lbf / g.nominal_mean_lbf(c.speed_kt, c.wind_kt);
+    if (std::abs(f - 0.6) < 1e-12 || std::abs(f - 1.15) < 1e-12) out.push_back(c);
+  }
+  return out;
+}
+
+TEST_F(QueryTest, HeadingProfileExponentIsMeasuredOnTheStoredHeadings) {
+  // EVIDENCE-OF: EQ-QUERY-11 (x / sigma^k interpolated across a heading cell, k the slope of the stored
+  // tensions' departures from their chords against the profile's, clamped to [1, 2])
+  const GridSpec squared = powered_profile_grid(2.0);
+  const std::string path = write(every_heading(squared), "squared.towdb");
+  write_heading_profiles(path, profile_points());
+  Database db(path, TOWDB_QUERY_SPACE_LOG);
+  std::mt19937 rng(23);
+  for (int i = 0; i < 200; ++i) {
+    const auto [s, w, h, l, m] = profile_cell_point(rng, squared);
+    const QueryResult r = db.query(request(s, w, h, l, m));
+    EXPECT_REL_CLOSE(r.values.gumbel_u_kips, squared.u_kips(s, w, h, l, m), kRoundOffRelTol) << s << " " << w << " " << h;
+    EXPECT_REL_CLOSE(1.0 / r.values.gumbel_alpha_per_kip, squared.beta_kips(s, w, h, l, m), kRoundOffRelTol);
+  }
+
+  // Outside the bounds: P^0.5 is answered with k = 1, P^3 with k = 2. At a node of every axis but heading
+  // (and a stored mean tension) the answer is the chord of ln u between 75 and 90 deg plus k times the
+  // profile's departure from its own chord.
+  for (const auto& [p, k] : {std::pair{0.5, 1.0}, std::pair{3.0, 2.0}}) {
+    const GridSpec g = powered_profile_grid(p);
+    const std::vector<SyntheticCase> cases = every_heading(g);
+    const std::string name = "power-" + std::to_string(p) + ".towdb";
+    write_heading_profiles(write(cases, name), profile_points());
+    Database clamped((dir_ / name).string(), TOWDB_QUERY_SPACE_LOG);
+    const double m = cases.front().mean_tension_lbf;  // stored at (5 kt, 20 kt, 60 deg, 1,000 ft) and every heading
+    for (double hq : {78.0, 84.4, 88.0}) {
+      const double t = (hq - 75.0) / 15.0;
+      const double chord_u = (1.0 - t) * std::log(g.u_kips(5.0, 20.0, 75.0, 1000.0, m)) +
+                             t * std::log(g.u_kips(5.0, 20.0, 90.0, 1000.0, m));
+      const double chord_p = (1.0 - t) * std::log(profile_at(75.0)) + t * std::log(profile_at(90.0));
+      const double expected = std::exp(chord_u + k * (std::log(profile_at(hq)) - chord_p));
+      const QueryResult r = clamped.query(request(5.0, 20.0, hq, 1000.0, m));
+      EXPECT_REL_CLOSE(r.values.gumbel_u_kips, expected, kRoundOffRelTol) << p << " " << hq;
+    }
+  }
 }
 
 // query-interp-20

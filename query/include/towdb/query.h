@@ -122,8 +122,8 @@
  *             each corner c from its node's heading h_c to the query's h_q
  *             along that profile before the weights of EQ-QUERY-6 combine
  *             them:
- *               g_c <- g_c + ln sigma_l(h_q) - ln sigma_l(h_c)   (log space),
- *               g_c <- g_c sigma_l(h_q) / sigma_l(h_c)           (linear space),
+ *               g_c <- g_c + k_l (ln sigma_l(h_q) - ln sigma_l(h_c))  (log space),
+ *               g_c <- g_c (sigma_l(h_q) / sigma_l(h_c))^k_l           (linear space),
  *             for u, beta and the stored interval alike (a change of scale),
  *             averaged over the node's two mean tensions with their weights
  *             when the corner lies between them. Across a heading cell the
@@ -131,13 +131,28 @@
  *             tension has minima a few degrees wide, where the first-order
  *             surge force (which turns with cos mu) and the heave/pitch
  *             extension cancel in the line, and the linear model has them
- *             too (docs/audit.md). Exact when x / sigma is what EQ-QUERY-6
- *             reproduces exactly; unchanged at the stored headings. A cell
+ *             too (docs/audit.md). The exponent k_l says how much deeper
+ *             the tension's minima and peaks are than the linear model's
+ *             (slack and snatch loads grow faster than sigma): measured on
+ *             the line's own stored headings h_j (the cases that share the
+ *             profile), as the least-squares slope through the origin of
+ *               d_x(j) = ln x(h_j) - chord of ln x between h_(j-1), h_(j+1)
+ *             (x the stored x(0.001, 1) of EQ-QUERY-3) against d_s(j), the
+ *             same departure of ln sigma_l, over the
+ *             interior headings; clamped to [1, 2] (below 1 it would flatten
+ *             the profile where additive forces the linear model lacks blur
+ *             the tension's shape; above 2 a few headings over-amplify narrow
+ *             minima; docs/audit.md), 1 when ln sigma_l has no curvature at
+ *             the stored headings. Across a heading cell the query thus
+ *             interpolates x / sigma^k: the chord of ln x plus k times the
+ *             profile's departure from its own chord. Exact when
+ *             x / sigma^k is what EQ-QUERY-6 reproduces exactly (k = 1 when
+ *             x / sigma is); unchanged at the stored headings. A cell
  *             with any corner without a profile is interpolated as without
  *             profiles (never half corrected). Along heading the error
  *             estimate of EQ-QUERY-7 then takes its differences of the
  *             stored headings' values each moved to h_q the same way, i.e.
- *             of x / sigma: where the profile explains the tension's change
+ *             of x / sigma^k: where the profile explains the tension's change
  *             the estimate is small, where the ratio changes (slack, the
  *             slowly varying forces) it is not.
  * EQ-QUERY-12 Speed profiles. The same along speed: where the database
@@ -147,7 +162,9 @@
  *             EQ-SWEEP-9: every 0.25 kt at most, the mean tension of the
  *             line's stored cases joined geometrically in speed, which is
  *             f T_calc(q) of EQ-QUERY-9 on a relative axis), a cell whose
- *             speed is not pinned moves each corner from V_c to V_q:
+ *             speed is not pinned moves each corner from V_c to V_q (with
+ *             k = 1: a fitted exponent along speed, from the line's three
+ *             stored speeds, made the worst answers worse; docs/audit.md):
  *               g_c <- g_c + ln sigma_l(V_q) - ln sigma_l(V_c)   (log space),
  *             (a factor in linear space), after the heading move of
  *             EQ-QUERY-11 (the two shifts add: a corner goes from (V_c, h_c)
