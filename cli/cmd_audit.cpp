@@ -72,7 +72,7 @@ class ReplayReader {
     ReplayInput r;
     const ordered_json& summary = field(j, "summary", "");
     r.options.seed = unsigned_field(summary, "seed", "summary.");
-    r.options.days = static_cast<int>(unsigned_field(summary, "days", "summary."));
+    r.options.days = small_int(summary, "days", "summary.");
     const ordered_json& questions = field(j, "questions", "");
     if (!questions.is_array() || questions.empty())
       throw InputError("--replay " + path_ + ": questions: expected a non-empty array of questions");
@@ -99,6 +99,13 @@ class ReplayReader {
     if (!v.is_number_unsigned()) fail(where + key, "expected a whole number >= 0, found " + v.dump());
     return v.get<std::uint64_t>();
   }
+  int small_int(const ordered_json& o, const std::string& key, const std::string& where) const {
+    const std::uint64_t v = unsigned_field(o, key, where);
+    if (v > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
+      fail(where + key, std::to_string(v) + " is too large (at most " +
+                            std::to_string(std::numeric_limits<int>::max()) + ")");
+    return static_cast<int>(v);
+  }
   std::string text(const ordered_json& o, const std::string& key, const std::string& where) const {
     const ordered_json& v = field(o, key, where);
     if (!v.is_string()) fail(where + key, "expected a string, found " + v.dump());
@@ -114,7 +121,7 @@ class ReplayReader {
   AuditOutcome outcome(const ordered_json& q, std::size_t i) const {
     const std::string where = "questions[" + std::to_string(i) + "].";
     AuditOutcome o;
-    o.q.index = static_cast<int>(unsigned_field(q, "index", where));
+    o.q.index = small_int(q, "index", where);
     o.q.tug = text(q, "tug", where);
     o.q.tow = text(q, "tow", where);
     o.q.line = text(q, "line", where);
