@@ -130,12 +130,16 @@ query::QueryRequest request_of(const AuditQuestion& q, bool extrapolate) {
 }
 
 // The database's answers (serial: a query handle is single-threaded and a
-// query takes microseconds). Errors other than the caller's are the audit's.
+// query takes microseconds), every answer field set whatever it held before
+// (a replay's outcomes carry an earlier database's). Errors other than the
+// caller's are the audit's.
 void answer_from_database(const std::filesystem::path& db_path, std::vector<AuditOutcome>* outcomes) {
   const std::unique_ptr<query::Database> opened = open_query_database("--db", db_path.string());
   query::Database& db = *opened;
   for (AuditOutcome& o : *outcomes) {
-    o.extrapolated_999_kips = kNaN;
+    o.answered = false;
+    o.refusal.clear();
+    o.answer_999_kips = o.uncertainty_kips = o.answer_extreme_lbf = o.extrapolated_999_kips = kNaN;
     if (!(o.q.mean_tension_lbf > 0.0)) {
       o.refusal = "calculated mean tension " + format_value(o.q.mean_tension_lbf) +
                   " lbf is not positive (wind and sea push the tow)";
@@ -186,6 +190,7 @@ void simulate(const io::ShipCatalog& catalog, int days, AuditOutcome* o) {
 
 void compute_errors(AuditOutcome* o) {
   o->rel_error_999 = o->rel_error_extreme = o->rel_error_extrapolated_999 = kNaN;
+  o->covered = false;
   if (!o->simulated) return;
   const double sim = o->simulated_999_kips;
   if (std::isfinite(o->extrapolated_999_kips))
@@ -251,11 +256,6 @@ std::vector<AuditOutcome> run_audit(const std::filesystem::path& db_path, const 
 }
 
 void replay_audit(const std::filesystem::path& db_path, std::vector<AuditOutcome>* earlier) {
-  for (AuditOutcome& o : *earlier) {
-    o.answered = o.covered = false;
-    o.refusal.clear();
-    o.answer_999_kips = o.uncertainty_kips = o.answer_extreme_lbf = kNaN;
-  }
   answer_from_database(db_path, earlier);
   for (AuditOutcome& o : *earlier) compute_errors(&o);
 }
